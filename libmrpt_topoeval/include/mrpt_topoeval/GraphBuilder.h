@@ -1,0 +1,85 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt_topoeval/TopologyGraph.h>
+
+#include <cstddef>
+#include <map>
+#include <string>
+
+namespace mrpt_topoeval
+{
+/** Thresholds of the Topology Graph construction (paper II-B), INI section `[GraphBuilder]`.
+ * Lengths in metres, so one configuration fits maps of any resolution. */
+struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
+{
+    /** A cell is an obstacle (a Voronoi site) when P(occupied) >= this [probability]. */
+    double occupied_min_prob = 0.65;
+    /** A cell is free space when P(occupied) <= this [probability]. */
+    double free_max_prob = 0.35;
+    /** Keep only skeleton points lying on free cells: the skeleton stops where the map stops
+     * being known (unexplored rooms, the outside of a robot map) [bool]. */
+    bool skeleton_on_free_cells_only = true;
+    /** Voronoi edges closer than this to an obstacle are dropped (paper: 30 cm) [m]. */
+    double min_clearance_m = 0.30;
+    /** Dead-end edges shorter than this are removed (paper II-B "short dead-end edges") [m]. */
+    double prune_dead_end_length_m = 0.50;
+    /** Dead ends into convex corners of free space are removed too: a medial-axis branch into
+     * a corner is sqrt(2) times as long as the clearance it loses, so a dead end shorter than
+     * this factor times (clearance at its junction - clearance at its end) is such a branch,
+     * whatever the room's size. 0 disables [ratio]. */
+    double corner_spur_ratio = 1.5;
+    /** Remaining dead-end edges shorter than this, and their end vertex, are marked spurious
+     * (paper II-C) [m]. */
+    double spurious_dead_end_length_m = 1.00;
+    /** Radius of the alpha shape whose longest polygon is the map's outer boundary; vertices
+     * outside it are removed (paper: 2.5 m) [m]. 0 disables the cut. */
+    double alpha_radius_m = 2.50;
+    /** Vertices joined by an edge shorter than this are merged into one vertex at their mean
+     * position (paper II-B, last step) [m]. */
+    double join_distance_m = 0.60;
+    /** An edge's direction at a vertex is measured to the path point this far along it
+     * (capped at half the edge) [m]. */
+    double edge_direction_distance_m = 0.75;
+
+    void loadFromConfigFile(
+        const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+    /** \throws InputError naming the field and value, e.g.
+     * "min_clearance_m = -1 violates min_clearance_m > 0". */
+    void validate() const;
+};
+
+/** What happened while building, for summaries and benchmarks. */
+struct GraphBuildStats
+{
+    std::size_t sites = 0;             //!< Obstacle cells used as Voronoi sites.
+    std::size_t voronoi_vertices = 0;  //!< Voronoi vertices inside the grid (after merging).
+    std::size_t voronoi_edges = 0;     //!< Voronoi edges inside the grid.
+    std::size_t voronoi_edges_kept = 0;  //!< ... with enough clearance.
+    std::size_t vertices_initial = 0;  //!< Topology Graph before pruning.
+    std::size_t vertices_after_prune = 0;
+    std::size_t vertices_after_alpha = 0;
+    std::size_t vertices_after_component = 0;
+    std::size_t vertices_final = 0;
+    std::size_t alpha_polygon_segments = 0;
+    /** Milliseconds per step, keyed by step name; "total" is the whole call. */
+    std::map<std::string, double> timing_ms;
+};
+
+/** Builds the Topology Graph of a grid map (paper II-B and II-C): Voronoi diagram of the
+ * obstacle cells, clearance filter, degree-2 chains merged into edges, short dead ends pruned,
+ * cut to the outer alpha shape, largest connected part, close vertices joined, attributes.
+ *
+ * Deterministic: the same grid and parameters give the same graph, with vertices numbered by
+ * position. A map with no obstacles or no free space gives an empty graph and a warning; a
+ * graph that is a pure cycle (no vertex of degree != 2) gives one degree-2 vertex on a loop
+ * edge (see doc/topology_graph.md).
+ * \throws InputError if `params.validate()` fails. */
+TopologyGraph buildTopologyGraph(
+    const mrpt::maps::COccupancyGridMap2D& grid, const GraphBuilderParameters& params = {},
+    GraphBuildStats* stats = nullptr);
+
+}  // namespace mrpt_topoeval

@@ -1,0 +1,283 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt_topoeval/GraphBuilder.h>
+#include <mrpt_topoeval/errors.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+#include "internal/GraphEditor.h"
+#include "internal/attributes.h"
+#include "internal/outer_boundary.h"
+#include "internal/voronoi_cgal.h"
+
+namespace mrpt_topoeval
+{
+// ---------------------------------------------------------------- parameters
+void GraphBuilderParameters::loadFromConfigFile(
+    const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+    MRPT_LOAD_CONFIG_VAR(occupied_min_prob, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(free_max_prob, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(skeleton_on_free_cells_only, bool, c, s);
+    MRPT_LOAD_CONFIG_VAR(min_clearance_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(prune_dead_end_length_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(corner_spur_ratio, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(spurious_dead_end_length_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(alpha_radius_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(join_distance_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(edge_direction_distance_m, double, c, s);
+}
+
+void GraphBuilderParameters::saveToConfigFile(
+    mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        occupied_min_prob, "[probability] a cell is an obstacle (Voronoi site) if P(occ) >= this");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(free_max_prob, "[probability] a cell is free if P(occ) <= this");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(skeleton_on_free_cells_only,
+                                 "[bool] keep only skeleton points on free cells");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        min_clearance_m, "[m] drop Voronoi edges nearer than this to an obstacle (paper: 0.3)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(prune_dead_end_length_m,
+                                 "[m] remove dead-end edges shorter than this");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        corner_spur_ratio,
+        "[ratio] remove dead ends shorter than this x their clearance drop (corner branches)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(spurious_dead_end_length_m,
+                                 "[m] mark remaining dead ends shorter than this as spurious");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        alpha_radius_m, "[m] alpha-shape radius of the outer boundary (paper: 2.5); 0 = no cut");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(join_distance_m,
+                                 "[m] merge vertices joined by an edge shorter than this");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(edge_direction_distance_m,
+                                 "[m] an edge's direction at a vertex is measured this far along it");
+}
+
+namespace
+{
+template <class T>
+void require(bool ok, const char* name, T value, const char* rule)
+{
+    if (ok) return;
+    std::ostringstream os;
+    os << "[GraphBuilder] " << name << " = " << value << " violates " << rule;
+    throw InputError(os.str());
+}
+}  // namespace
+
+void GraphBuilderParameters::validate() const
+{
+    auto finite = [](double v) { return std::isfinite(v); };
+    require(finite(occupied_min_prob) && occupied_min_prob > 0.5 && occupied_min_prob <= 1.0,
+            "occupied_min_prob", occupied_min_prob, "0.5 < occupied_min_prob <= 1");
+    require(finite(free_max_prob) && free_max_prob >= 0.0 && free_max_prob < 0.5,
+            "free_max_prob", free_max_prob, "0 <= free_max_prob < 0.5");
+    require(finite(min_clearance_m) && min_clearance_m > 0.0, "min_clearance_m", min_clearance_m,
+            "min_clearance_m > 0");
+    require(finite(prune_dead_end_length_m) && prune_dead_end_length_m >= 0.0,
+            "prune_dead_end_length_m", prune_dead_end_length_m, "prune_dead_end_length_m >= 0");
+    require(finite(corner_spur_ratio) && corner_spur_ratio >= 0.0, "corner_spur_ratio",
+            corner_spur_ratio, "corner_spur_ratio >= 0");
+    require(finite(spurious_dead_end_length_m) && spurious_dead_end_length_m >= 0.0,
+            "spurious_dead_end_length_m", spurious_dead_end_length_m,
+            "spurious_dead_end_length_m >= 0");
+    require(finite(alpha_radius_m) && alpha_radius_m >= 0.0, "alpha_radius_m", alpha_radius_m,
+            "alpha_radius_m >= 0");
+    require(finite(join_distance_m) && join_distance_m >= 0.0, "join_distance_m",
+            join_distance_m, "join_distance_m >= 0");
+    require(finite(edge_direction_distance_m) && edge_direction_distance_m > 0.0,
+            "edge_direction_distance_m", edge_direction_distance_m,
+            "edge_direction_distance_m > 0");
+}
+
+// ---------------------------------------------------------------- construction
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+class StepTimer
+{
+public:
+    explicit StepTimer(GraphBuildStats& stats) : m_stats(stats) {}
+    void lap(const char* step)
+    {
+        const auto now = Clock::now();
+        m_stats.timing_ms[step] = std::chrono::duration<double, std::milli>(now - m_last).count();
+        m_last = now;
+    }
+    void total()
+    {
+        m_stats.timing_ms["total"] =
+            std::chrono::duration<double, std::milli>(Clock::now() - m_start).count();
+    }
+
+private:
+    GraphBuildStats& m_stats;
+    Clock::time_point m_start = Clock::now(), m_last = m_start;
+};
+
+enum CellClass : std::uint8_t
+{
+    kUnknown = 0,
+    kFree = 1,
+    kOccupied = 2
+};
+}  // namespace
+
+TopologyGraph buildTopologyGraph(
+    const mrpt::maps::COccupancyGridMap2D& grid, const GraphBuilderParameters& params,
+    GraphBuildStats* stats_out)
+{
+    params.validate();
+    GraphBuildStats stats;
+    StepTimer timer(stats);
+
+    TopologyGraph graph;
+    const int sx = static_cast<int>(grid.getSizeX()), sy = static_cast<int>(grid.getSizeY());
+    const double res = grid.getResolution();
+    graph.map.resolution_m = res;
+    graph.map.size_x = sx;
+    graph.map.size_y = sy;
+    graph.map.x_min_m = grid.getXMin();
+    graph.map.y_min_m = grid.getYMin();
+    graph.map.x_max_m = grid.getXMax();
+    graph.map.y_max_m = grid.getYMax();
+
+    // Classify cells once, comparing quantised log-odds against thresholds converted once.
+    using Cell = mrpt::maps::COccupancyGridMap2D::cellType;
+    const Cell occ_l = mrpt::maps::COccupancyGridMap2D::p2l(
+        static_cast<float>(1.0 - params.occupied_min_prob));
+    const Cell free_l =
+        mrpt::maps::COccupancyGridMap2D::p2l(static_cast<float>(1.0 - params.free_max_prob));
+    std::vector<std::uint8_t> cls(static_cast<std::size_t>(sx) * sy, kUnknown);
+    for (int cy = 0; cy < sy; ++cy)
+    {
+        const Cell* row = grid.getRow(cy);
+        std::uint8_t* out = &cls[static_cast<std::size_t>(cy) * sx];
+        for (int cx = 0; cx < sx; ++cx)
+        {
+            // Log-odds of P(free): low = occupied.
+            if (row[cx] <= occ_l)
+                out[cx] = kOccupied;
+            else if (row[cx] >= free_l)
+                out[cx] = kFree;
+        }
+    }
+    for (auto c : cls)
+    {
+        graph.map.occupied_cells += c == kOccupied;
+        graph.map.free_cells += c == kFree;
+    }
+
+    // Paper II-B: the sites are the occupied cells. Only those with a non-occupied 4-neighbour
+    // (or on the grid's edge) can be the nearest obstacle of a free point; the rest only make
+    // the triangulation bigger.
+    internal::VoronoiInput vin;
+    vin.size_x = sx;
+    vin.size_y = sy;
+    auto at = [&](int cx, int cy) { return cls[static_cast<std::size_t>(cy) * sx + cx]; };
+    for (int cy = 0; cy < sy; ++cy)
+        for (int cx = 0; cx < sx; ++cx)
+        {
+            if (at(cx, cy) != kOccupied) continue;
+            const bool border = cx == 0 || cy == 0 || cx == sx - 1 || cy == sy - 1;
+            if (border || at(cx - 1, cy) != kOccupied || at(cx + 1, cy) != kOccupied ||
+                at(cx, cy - 1) != kOccupied || at(cx, cy + 1) != kOccupied)
+                vin.sites.emplace_back(cx, cy);
+        }
+    stats.sites = vin.sites.size();
+    timer.lap("classify");
+
+    if (graph.map.occupied_cells == 0 || graph.map.free_cells == 0)
+    {
+        graph.warnings.push_back(graph.map.occupied_cells == 0
+                                     ? "the map has no obstacles: the Topology Graph is empty"
+                                     : "the map has no free space: the Topology Graph is empty");
+        timer.total();
+        if (stats_out) *stats_out = stats;
+        return graph;
+    }
+
+    if (params.skeleton_on_free_cells_only)
+    {
+        vin.keep_mask.resize(cls.size());
+        for (std::size_t i = 0; i < cls.size(); ++i) vin.keep_mask[i] = cls[i] == kFree;
+    }
+    std::vector<std::uint8_t>().swap(cls);
+    vin.min_clearance_cells = params.min_clearance_m / res;
+    vin.alpha_radius_cells = params.alpha_radius_m / res;
+    internal::VoronoiSkeleton vd = internal::computeVoronoiSkeleton(vin);
+    std::vector<Eigen::Vector2i>().swap(vin.sites);
+    std::vector<std::uint8_t>().swap(vin.keep_mask);
+    stats.voronoi_vertices = vd.node_pos.size();
+    stats.voronoi_edges = vd.edges_total;
+    stats.voronoi_edges_kept = vd.edges.size();
+    timer.lap("voronoi");
+
+    // Paper II-B: vertices of degree 1 or > 2 become graph vertices, degree-2 chains merge into
+    // edges that keep their polyline path.
+    internal::GraphEditor g;
+    {
+        std::vector<int> vmap(vd.node_pos.size(), -1);
+        auto vertexOf = [&](int n) {
+            if (vmap[n] < 0) vmap[n] = g.addVertex(vd.node_pos[n], vd.node_clearance[n]);
+            return vmap[n];
+        };
+        for (const auto& e : vd.edges) g.addSegment(vertexOf(e.a), vertexOf(e.b), e.min_clearance);
+    }
+    g.dissolveDegreeTwo();
+    stats.vertices_initial = g.numAliveVertices();
+    timer.lap("chains");
+
+    g.pruneDeadEnds(params.prune_dead_end_length_m / res, params.corner_spur_ratio);
+    stats.vertices_after_prune = g.numAliveVertices();
+    timer.lap("prune");
+
+    // Paper II-B: cut everything outside the longest polygon of the map's alpha shape.
+    if (params.alpha_radius_m > 0.0)
+    {
+        std::size_t polygons = 0;
+        std::vector<Eigen::Vector2d> outer =
+            internal::longestBoundaryPolygon(vd.alpha_boundary, &polygons);
+        stats.alpha_polygon_segments = outer.size();
+        if (outer.size() >= 3)
+        {
+            g.removeVerticesIf([&](const Eigen::Vector2d& p)
+                               { return !internal::pointInPolygon(outer, p); });
+            g.dissolveDegreeTwo();
+            const internal::CellToWorld to_world{grid.idx2x(0), grid.idx2y(0), res};
+            for (const auto& p : outer) graph.outer_boundary_m.push_back(to_world(p));
+        }
+    }
+    stats.vertices_after_alpha = g.numAliveVertices();
+    timer.lap("alpha_cut");
+
+    g.keepLargestComponent();
+    stats.vertices_after_component = g.numAliveVertices();
+    timer.lap("largest_component");
+
+    g.joinClose(params.join_distance_m / res);
+    timer.lap("join");
+
+    const internal::CellToWorld to_world{grid.idx2x(0), grid.idx2y(0), res};
+    internal::attributeGraph(g, to_world, params, graph);
+    stats.vertices_final = graph.vertices.size();
+    timer.lap("attributes");
+
+    if (graph.vertices.empty())
+        graph.warnings.push_back(
+            "no passage wider than 2 x min_clearance_m was found: the Topology Graph is empty");
+    else if (graph.vertices.size() == 1 && graph.vertices[0].degree() == 2)
+        graph.warnings.push_back(
+            "the map's graph is a single cycle with no junction or dead end: it is returned as "
+            "one degree-2 vertex (largest clearance) on a loop edge");
+
+    timer.total();
+    if (stats_out) *stats_out = stats;
+    return graph;
+}
+
+}  // namespace mrpt_topoeval

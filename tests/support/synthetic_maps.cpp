@@ -1,0 +1,208 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#include "synthetic_maps.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace mrpt_topoeval::testing
+{
+using mrpt::maps::COccupancyGridMap2D;
+
+GridSketch::GridSketch(double width_m, double height_m, double resolution_m)
+{
+    m_grid.setSize(0.0, width_m, 0.0, height_m, resolution_m, 0.0f);
+}
+
+void GridSketch::set(double x0, double y0, double x1, double y1, float p_free)
+{
+    const int cx0 = std::max(0, m_grid.x2idx(std::min(x0, x1) + 1e-9));
+    const int cy0 = std::max(0, m_grid.y2idx(std::min(y0, y1) + 1e-9));
+    const int cx1 = std::min<int>(m_grid.getSizeX() - 1, m_grid.x2idx(std::max(x0, x1) - 1e-9));
+    const int cy1 = std::min<int>(m_grid.getSizeY() - 1, m_grid.y2idx(std::max(y0, y1) - 1e-9));
+    for (int cy = cy0; cy <= cy1; ++cy)
+        for (int cx = cx0; cx <= cx1; ++cx) m_grid.setCell(cx, cy, p_free);
+}
+
+GridSketch& GridSketch::carve(double x0, double y0, double x1, double y1)
+{
+    set(x0, y0, x1, y1, 1.0f);
+    return *this;
+}
+GridSketch& GridSketch::fill(double x0, double y0, double x1, double y1)
+{
+    set(x0, y0, x1, y1, 0.0f);
+    return *this;
+}
+GridSketch& GridSketch::unknown(double x0, double y0, double x1, double y1)
+{
+    set(x0, y0, x1, y1, 0.5f);
+    return *this;
+}
+
+COccupancyGridMap2D makeTJunctionMap(double res)
+{
+    GridSketch s(14.0, 9.0, res);
+    s.carve(1.0, 6.0, 13.0, 7.5);  // horizontal corridor, centre line y = 6.75
+    s.carve(6.25, 1.0, 7.75, 6.0);  // branch down from the middle, centre line x = 7
+    return s.grid();
+}
+
+COccupancyGridMap2D makePlusMap(double res)
+{
+    GridSketch s(16.0, 16.0, res);
+    s.carve(2.0, 7.25, 14.0, 8.75);
+    s.carve(7.25, 2.0, 8.75, 14.0);
+    return s.grid();
+}
+
+COccupancyGridMap2D makeTwoRoomsMap(double res)
+{
+    GridSketch s(10.6, 6.0, res);
+    s.carve(1.0, 1.0, 5.0, 5.0);   // room A, centre (3, 3)
+    s.carve(5.2, 1.0, 9.2, 5.0);   // room B, centre (7.2, 3)
+    s.carve(4.9, 2.5, 5.3, 3.5);   // 1 m door through the 0.2 m wall
+    return s.grid();
+}
+
+COccupancyGridMap2D makeCorridorLoopMap(double res)
+{
+    GridSketch s(12.0, 12.0, res);
+    s.carve(1.5, 1.5, 10.5, 10.5);
+    s.fill(3.0, 3.0, 9.0, 9.0);  // the 6 m solid block inside
+    return s.grid();
+}
+
+COccupancyGridMap2D makeLoopWithSpurMap(double res)
+{
+    GridSketch s(16.0, 12.0, res);
+    s.carve(1.5, 1.5, 10.5, 10.5);
+    s.fill(3.0, 3.0, 9.0, 9.0);
+    s.carve(10.5, 5.25, 14.5, 6.75);  // 4 m dead-end corridor from the right side
+    return s.grid();
+}
+
+COccupancyGridMap2D makeOfficeMap(double res)
+{
+    // An asymmetric floor: a corridor loop around a core, rooms of different sizes on doors,
+    // and two dead-end corridors, so that vertices differ in degree, angles and edge lengths.
+    GridSketch s(32.0, 22.0, res);
+    s.carve(2.0, 8.0, 28.0, 10.0);   // main corridor (south side of the loop)
+    s.carve(2.0, 14.0, 22.0, 16.0);  // north corridor
+    s.carve(2.0, 8.0, 4.0, 16.0);    // west link
+    s.carve(20.0, 10.0, 22.0, 14.0); // east link
+    s.carve(26.0, 10.0, 28.0, 20.0); // dead-end corridor going north
+    s.carve(9.0, 2.0, 10.8, 8.0);    // dead-end corridor going south
+    // Rooms north of the north corridor, doors 1 m wide.
+    s.carve(2.5, 17.0, 7.0, 21.0).carve(4.0, 16.0, 5.0, 17.0);
+    s.carve(8.0, 17.0, 15.0, 21.0).carve(10.0, 16.0, 11.0, 17.0);
+    s.carve(16.0, 17.0, 21.5, 20.0).carve(19.0, 16.0, 20.0, 17.0);
+    // Rooms south of the main corridor.
+    s.carve(2.0, 2.0, 8.0, 7.0).carve(5.0, 7.0, 6.0, 8.0);
+    s.carve(12.0, 2.5, 18.0, 7.0).carve(13.0, 7.0, 14.0, 8.0);
+    s.carve(19.0, 1.0, 30.0, 7.0).carve(24.0, 7.0, 25.0, 8.0);
+    // A room inside the loop with two doors.
+    s.carve(6.0, 11.0, 18.0, 13.0).carve(7.0, 10.0, 8.0, 11.0).carve(16.0, 13.0, 17.0, 14.0);
+    // A room east of the dead-end corridor.
+    s.carve(29.0, 12.0, 31.5, 18.0).carve(28.0, 14.5, 29.0, 15.5);
+    return s.grid();
+}
+
+namespace
+{
+Eigen::Vector2d mapCentre(const COccupancyGridMap2D& g)
+{
+    return {0.5 * (g.getXMin() + g.getXMax()), 0.5 * (g.getYMin() + g.getYMax())};
+}
+}  // namespace
+
+Eigen::Vector2d transformPoint(
+    const COccupancyGridMap2D& src, double yaw, const Eigen::Vector2d& shift,
+    const Eigen::Vector2d& p)
+{
+    const Eigen::Vector2d c = mapCentre(src);
+    const Eigen::Rotation2Dd R(yaw);
+    return c + R * (p - c) + shift;
+}
+
+COccupancyGridMap2D transformGrid(
+    const COccupancyGridMap2D& src, double yaw, const Eigen::Vector2d& shift, double res)
+{
+    if (res <= 0.0) res = src.getResolution();
+    // Bounding box of the moved source.
+    double x0 = 1e18, y0 = 1e18, x1 = -1e18, y1 = -1e18;
+    for (double x : {src.getXMin(), src.getXMax()})
+        for (double y : {src.getYMin(), src.getYMax()})
+        {
+            const Eigen::Vector2d q = transformPoint(src, yaw, shift, {x, y});
+            x0 = std::min(x0, q.x()), x1 = std::max(x1, q.x());
+            y0 = std::min(y0, q.y()), y1 = std::max(y1, q.y());
+        }
+    COccupancyGridMap2D dst;
+    dst.setSize(x0, x1, y0, y1, res, 0.5f);
+    const Eigen::Vector2d c = mapCentre(src);
+    const Eigen::Rotation2Dd Rinv(-yaw);
+    for (unsigned cy = 0; cy < dst.getSizeY(); ++cy)
+        for (unsigned cx = 0; cx < dst.getSizeX(); ++cx)
+        {
+            const Eigen::Vector2d q(dst.idx2x(cx), dst.idx2y(cy));
+            const Eigen::Vector2d p = c + Rinv * (q - shift - c);
+            const int sx = src.x2idx(p.x()), sy = src.y2idx(p.y());
+            if (sx < 0 || sy < 0 || sx >= static_cast<int>(src.getSizeX()) ||
+                sy >= static_cast<int>(src.getSizeY()))
+                continue;
+            dst.getRow(cy)[cx] = src.getRow(sy)[sx];
+        }
+    return dst;
+}
+
+COccupancyGridMap2D addSpeckleNoise(const COccupancyGridMap2D& src, double fraction, std::uint32_t seed)
+{
+    COccupancyGridMap2D dst = src;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const int sx = static_cast<int>(src.getSizeX()), sy = static_cast<int>(src.getSizeY());
+    auto occ = [&](int x, int y) { return src.getCell(x, y) < 0.35f; };
+    auto fre = [&](int x, int y) { return src.getCell(x, y) > 0.65f; };
+    for (int y = 1; y < sy - 1; ++y)
+        for (int x = 1; x < sx - 1; ++x)
+        {
+            const bool near_occ = occ(x - 1, y) || occ(x + 1, y) || occ(x, y - 1) || occ(x, y + 1);
+            const bool near_free =
+                fre(x - 1, y) || fre(x + 1, y) || fre(x, y - 1) || fre(x, y + 1);
+            if (fre(x, y) && near_occ && u(rng) < fraction) dst.setCell(x, y, 0.0f);
+            else if (occ(x, y) && near_free && u(rng) < fraction) dst.setCell(x, y, 1.0f);
+        }
+    return dst;
+}
+
+COccupancyGridMap2D makeLargeBuilding(int cells, double res)
+{
+    // Rooms 6 m x 6 m on a lattice with 2 m corridors between blocks of 2 x 2 rooms; walls
+    // 0.2 m; each room has one 1 m door to a corridor.
+    const double size = cells * res;
+    GridSketch s(size, size, res);
+    const double pitch = 14.0;  // 2 rooms (6 m + wall) + corridor 2 m
+    for (double by = 0.0; by + pitch <= size; by += pitch)
+        for (double bx = 0.0; bx + pitch <= size; bx += pitch)
+        {
+            s.carve(bx, by, bx + pitch, by + 2.0);   // corridor along the south of the block
+            s.carve(bx, by, bx + 2.0, by + pitch);   // corridor along the west of the block
+            for (int ry = 0; ry < 2; ++ry)
+                for (int rx = 0; rx < 2; ++rx)
+                {
+                    const double x0 = bx + 2.2 + rx * 6.0, y0 = by + 2.2 + ry * 6.0;
+                    s.carve(x0, y0, x0 + 5.8, y0 + 5.8);
+                    if (ry == 0)
+                        s.carve(x0 + 2.0, y0 - 0.2, x0 + 3.0, y0);  // door south
+                    else if (rx == 0)
+                        s.carve(x0 - 0.2, y0 + 2.0, x0, y0 + 3.0);  // door west
+                    else
+                        s.carve(x0 - 0.2, y0 + 2.0, x0, y0 + 3.0);  // door to the west room
+                }
+        }
+    return s.grid();
+}
+
+}  // namespace mrpt_topoeval::testing

@@ -1,0 +1,79 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+// Grid maps built in code whose Topology Graph is known, and perturbations of maps (rotation,
+// shift, resampling, speckle noise) for tests and benchmarks.
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <Eigen/Core>
+#include <cstdint>
+
+namespace mrpt_topoeval::testing
+{
+/** A canvas in metres: starts solid (all occupied); corridors and rooms are carved free. The
+ * world frame has its origin at the lower-left corner. */
+class GridSketch
+{
+public:
+    GridSketch(double width_m, double height_m, double resolution_m = 0.05);
+
+    /** Axis-aligned rectangle [x0,x1] x [y0,y1] set free. */
+    GridSketch& carve(double x0, double y0, double x1, double y1);
+    /** Axis-aligned rectangle set occupied (walls, pillars). */
+    GridSketch& fill(double x0, double y0, double x1, double y1);
+    /** Axis-aligned rectangle set unknown (P = 0.5). */
+    GridSketch& unknown(double x0, double y0, double x1, double y1);
+
+    const mrpt::maps::COccupancyGridMap2D& grid() const { return m_grid; }
+
+private:
+    void set(double x0, double y0, double x1, double y1, float p_free);
+    mrpt::maps::COccupancyGridMap2D m_grid;
+};
+
+/** Corridors 1.5 m wide: a horizontal corridor 12 m long with a branch 5 m long from its middle.
+ * Graph: one junction of degree 3 at (7, 6.75) and three dead ends. */
+mrpt::maps::COccupancyGridMap2D makeTJunctionMap(double resolution_m = 0.05);
+
+/** Two corridors 1.5 m wide crossing at (8, 8), arms 6 m long: one degree-4 vertex and four
+ * dead ends. */
+mrpt::maps::COccupancyGridMap2D makePlusMap(double resolution_m = 0.05);
+
+/** Two 4 m x 4 m rooms joined by a 1 m wide door through a 0.2 m wall: two dead-end room
+ * centres joined by one edge through the door (no junction). */
+mrpt::maps::COccupancyGridMap2D makeTwoRoomsMap(double resolution_m = 0.05);
+
+/** A square ring corridor 1.5 m wide around a 6 m x 6 m solid block: a pure cycle. */
+mrpt::maps::COccupancyGridMap2D makeCorridorLoopMap(double resolution_m = 0.05);
+
+/** The corridor loop with a 4 m dead-end corridor leaving one side: one junction of degree 3
+ * with a loop edge back to itself and one dead-end edge. */
+mrpt::maps::COccupancyGridMap2D makeLoopWithSpurMap(double resolution_m = 0.05);
+
+/** An asymmetric office floor about 30 m x 20 m: a corridor loop, rooms of several sizes on
+ * doors, dead-end corridors. Used where a richer graph is wanted (stability, matching). */
+mrpt::maps::COccupancyGridMap2D makeOfficeMap(double resolution_m = 0.05);
+
+/** `src` moved rigidly by (yaw about the map centre, then shift) and resampled on a grid of
+ * `resolution_m` (0 keeps the source resolution): every target cell takes the value of the
+ * source cell under its centre (nearest neighbour). Cells mapping outside are unknown. */
+mrpt::maps::COccupancyGridMap2D transformGrid(
+    const mrpt::maps::COccupancyGridMap2D& src, double yaw_rad, const Eigen::Vector2d& shift_m,
+    double resolution_m = 0.0);
+
+/** Where transformGrid() puts a world point of `src` (for checking positions). */
+Eigen::Vector2d transformPoint(
+    const mrpt::maps::COccupancyGridMap2D& src, double yaw_rad, const Eigen::Vector2d& shift_m,
+    const Eigen::Vector2d& p);
+
+/** Flips a fraction of the free cells that touch an obstacle to occupied, and the same
+ * fraction of those obstacle cells to free: light, seeded speckle on the walls. */
+mrpt::maps::COccupancyGridMap2D addSpeckleNoise(
+    const mrpt::maps::COccupancyGridMap2D& src, double fraction, std::uint32_t seed);
+
+/** A large synthetic building for benchmarks: a lattice of rooms on corridors filling a grid
+ * of `cells` x `cells`. */
+mrpt::maps::COccupancyGridMap2D makeLargeBuilding(int cells, double resolution_m = 0.05);
+
+}  // namespace mrpt_topoeval::testing

@@ -1,0 +1,20 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace mrpt_topoeval::testing
+{
+/** `../shared/data/<relative>` if that file exists (tests on real data skip otherwise). */
+std::optional<std::string> sharedDataFile(const std::string& relative);
+/** The project's `share/mrpt_topoeval` folder (samples, default INI). */
+std::string shareDir();
+/** The project's `tests` folder (bad-input corpus under tests/data). */
+std::string testsDir();
+/** The built `topoeval` executable, empty if apps are not built. */
+std::string topoevalBin();
+/** A fresh empty temporary folder for one test. */
+std::string makeTempDir(const std::string& tag);
+
+}  // namespace mrpt_topoeval::testing
