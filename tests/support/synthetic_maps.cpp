@@ -44,7 +44,7 @@ GridSketch& GridSketch::unknown(double x0, double y0, double x1, double y1)
 COccupancyGridMap2D makeTJunctionMap(double res)
 {
     GridSketch s(14.0, 9.0, res);
-    s.carve(1.0, 6.0, 13.0, 7.5);  // horizontal corridor, centre line y = 6.75
+    s.carve(1.0, 6.0, 13.0, 7.5);   // horizontal corridor, centre line y = 6.75
     s.carve(6.25, 1.0, 7.75, 6.0);  // branch down from the middle, centre line x = 7
     return s.grid();
 }
@@ -60,9 +60,9 @@ COccupancyGridMap2D makePlusMap(double res)
 COccupancyGridMap2D makeTwoRoomsMap(double res)
 {
     GridSketch s(10.6, 6.0, res);
-    s.carve(1.0, 1.0, 5.0, 5.0);   // room A, centre (3, 3)
-    s.carve(5.2, 1.0, 9.2, 5.0);   // room B, centre (7.2, 3)
-    s.carve(4.9, 2.5, 5.3, 3.5);   // 1 m door through the 0.2 m wall
+    s.carve(1.0, 1.0, 5.0, 5.0);  // room A, centre (3, 3)
+    s.carve(5.2, 1.0, 9.2, 5.0);  // room B, centre (7.2, 3)
+    s.carve(4.9, 2.5, 5.3, 3.5);  // 1 m door through the 0.2 m wall
     return s.grid();
 }
 
@@ -88,12 +88,12 @@ COccupancyGridMap2D makeOfficeMap(double res)
     // An asymmetric floor: a corridor loop around a core, rooms of different sizes on doors,
     // and two dead-end corridors, so that vertices differ in degree, angles and edge lengths.
     GridSketch s(32.0, 22.0, res);
-    s.carve(2.0, 8.0, 28.0, 10.0);   // main corridor (south side of the loop)
-    s.carve(2.0, 14.0, 22.0, 16.0);  // north corridor
-    s.carve(2.0, 8.0, 4.0, 16.0);    // west link
-    s.carve(20.0, 10.0, 22.0, 14.0); // east link
-    s.carve(26.0, 10.0, 28.0, 20.0); // dead-end corridor going north
-    s.carve(9.0, 2.0, 10.8, 8.0);    // dead-end corridor going south
+    s.carve(2.0, 8.0, 28.0, 10.0);    // main corridor (south side of the loop)
+    s.carve(2.0, 14.0, 22.0, 16.0);   // north corridor
+    s.carve(2.0, 8.0, 4.0, 16.0);     // west link
+    s.carve(20.0, 10.0, 22.0, 14.0);  // east link
+    s.carve(26.0, 10.0, 28.0, 20.0);  // dead-end corridor going north
+    s.carve(9.0, 2.0, 10.8, 8.0);     // dead-end corridor going south
     // Rooms north of the north corridor, doors 1 m wide.
     s.carve(2.5, 17.0, 7.0, 21.0).carve(4.0, 16.0, 5.0, 17.0);
     s.carve(8.0, 17.0, 15.0, 21.0).carve(10.0, 16.0, 11.0, 17.0);
@@ -117,17 +117,16 @@ Eigen::Vector2d mapCentre(const COccupancyGridMap2D& g)
 }
 }  // namespace
 
-Eigen::Vector2d transformPoint(
-    const COccupancyGridMap2D& src, double yaw, const Eigen::Vector2d& shift,
-    const Eigen::Vector2d& p)
+Eigen::Vector2d transformPoint(const COccupancyGridMap2D& src, double yaw,
+                               const Eigen::Vector2d& shift, const Eigen::Vector2d& p)
 {
     const Eigen::Vector2d c = mapCentre(src);
     const Eigen::Rotation2Dd R(yaw);
     return c + R * (p - c) + shift;
 }
 
-COccupancyGridMap2D transformGrid(
-    const COccupancyGridMap2D& src, double yaw, const Eigen::Vector2d& shift, double res)
+COccupancyGridMap2D transformGrid(const COccupancyGridMap2D& src, double yaw,
+                                  const Eigen::Vector2d& shift, double res)
 {
     if (res <= 0.0) res = src.getResolution();
     // Bounding box of the moved source.
@@ -143,21 +142,49 @@ COccupancyGridMap2D transformGrid(
     dst.setSize(x0, x1, y0, y1, res, 0.5f);
     const Eigen::Vector2d c = mapCentre(src);
     const Eigen::Rotation2Dd Rinv(-yaw);
+    // At the same resolution a target cell takes the source cell under its centre. When
+    // coarsening, it looks at k x k points of its footprint: an obstacle seen anywhere wins
+    // (a wall hit anywhere in a cell marks it in a coarser map, and a thin wall is never lost
+    // the way sampling the centre alone loses it); otherwise the cell gets the footprint's mean
+    // P(free), so a cell mostly unseen stays unknown.
+    const double ratio = res / src.getResolution();
+    const int k = ratio > 1.0 + 1e-9 ? static_cast<int>(std::ceil(2.0 * ratio)) : 1;
+    const auto occ_l = COccupancyGridMap2D::p2l(0.35f);
+    const auto l_occ = COccupancyGridMap2D::p2l(0.0f);
     for (unsigned cy = 0; cy < dst.getSizeY(); ++cy)
         for (unsigned cx = 0; cx < dst.getSizeX(); ++cx)
         {
-            const Eigen::Vector2d q(dst.idx2x(cx), dst.idx2y(cy));
-            const Eigen::Vector2d p = c + Rinv * (q - shift - c);
-            const int sx = src.x2idx(p.x()), sy = src.y2idx(p.y());
-            if (sx < 0 || sy < 0 || sx >= static_cast<int>(src.getSizeX()) ||
-                sy >= static_cast<int>(src.getSizeY()))
-                continue;
-            dst.getRow(cy)[cx] = src.getRow(sy)[sx];
+            bool any_occ = false;
+            double sum_p = 0.0;
+            int n = 0;
+            for (int i = 0; i < k && !any_occ; ++i)
+                for (int j = 0; j < k && !any_occ; ++j)
+                {
+                    const Eigen::Vector2d q(dst.idx2x(cx) + res * ((i + 0.5) / k - 0.5),
+                                            dst.idx2y(cy) + res * ((j + 0.5) / k - 0.5));
+                    const Eigen::Vector2d p = c + Rinv * (q - shift - c);
+                    const int sx = src.x2idx(p.x()), sy = src.y2idx(p.y());
+                    ++n;
+                    if (sx < 0 || sy < 0 || sx >= static_cast<int>(src.getSizeX()) ||
+                        sy >= static_cast<int>(src.getSizeY()))
+                    {
+                        sum_p += 0.5;
+                        continue;
+                    }
+                    const auto l = src.getRow(sy)[sx];
+                    any_occ = l <= occ_l;
+                    sum_p += COccupancyGridMap2D::l2p(l);
+                }
+            if (any_occ)
+                dst.getRow(cy)[cx] = l_occ;
+            else
+                dst.getRow(cy)[cx] = COccupancyGridMap2D::p2l(static_cast<float>(sum_p / n));
         }
     return dst;
 }
 
-COccupancyGridMap2D addSpeckleNoise(const COccupancyGridMap2D& src, double fraction, std::uint32_t seed)
+COccupancyGridMap2D addSpeckleNoise(const COccupancyGridMap2D& src, double fraction,
+                                    std::uint32_t seed)
 {
     COccupancyGridMap2D dst = src;
     std::mt19937 rng(seed);
@@ -169,39 +196,47 @@ COccupancyGridMap2D addSpeckleNoise(const COccupancyGridMap2D& src, double fract
         for (int x = 1; x < sx - 1; ++x)
         {
             const bool near_occ = occ(x - 1, y) || occ(x + 1, y) || occ(x, y - 1) || occ(x, y + 1);
-            const bool near_free =
-                fre(x - 1, y) || fre(x + 1, y) || fre(x, y - 1) || fre(x, y + 1);
-            if (fre(x, y) && near_occ && u(rng) < fraction) dst.setCell(x, y, 0.0f);
-            else if (occ(x, y) && near_free && u(rng) < fraction) dst.setCell(x, y, 1.0f);
+            const bool near_free = fre(x - 1, y) || fre(x + 1, y) || fre(x, y - 1) || fre(x, y + 1);
+            if (fre(x, y) && near_occ && u(rng) < fraction)
+                dst.setCell(x, y, 0.0f);
+            else if (occ(x, y) && near_free && u(rng) < fraction)
+                dst.setCell(x, y, 1.0f);
         }
     return dst;
 }
 
 COccupancyGridMap2D makeLargeBuilding(int cells, double res)
 {
-    // Rooms 6 m x 6 m on a lattice with 2 m corridors between blocks of 2 x 2 rooms; walls
-    // 0.2 m; each room has one 1 m door to a corridor.
-    const double size = cells * res;
+    // Blocks of 2 x 2 rooms (5.8 m, 0.2 m walls) with a 2 m corridor along the south and west
+    // of each block; the corridors form a lattice of loops. Every room has one 1 m door: the
+    // south rooms to the south corridor, the north-west room to the west corridor, the
+    // north-east room to its western neighbour. A 0.5 m solid margin closes the building.
+    const double size = cells * res, margin = 0.5, corridor = 2.0, wall = 0.2, room = 5.8;
+    const double pitch = corridor + 2.0 * (wall + room) + wall;
     GridSketch s(size, size, res);
-    const double pitch = 14.0;  // 2 rooms (6 m + wall) + corridor 2 m
-    for (double by = 0.0; by + pitch <= size; by += pitch)
-        for (double bx = 0.0; bx + pitch <= size; bx += pitch)
+    const int blocks = static_cast<int>((size - 2.0 * margin - corridor) / pitch);
+    const double end = margin + blocks * pitch + corridor;
+    for (int j = 0; j < blocks; ++j)
+        for (int i = 0; i < blocks; ++i)
         {
-            s.carve(bx, by, bx + pitch, by + 2.0);   // corridor along the south of the block
-            s.carve(bx, by, bx + 2.0, by + pitch);   // corridor along the west of the block
+            const double bx = margin + i * pitch, by = margin + j * pitch;
+            s.carve(bx, by, bx + pitch + corridor, by + corridor);  // south corridor
+            s.carve(bx, by, bx + corridor, by + pitch + corridor);  // west corridor
             for (int ry = 0; ry < 2; ++ry)
                 for (int rx = 0; rx < 2; ++rx)
                 {
-                    const double x0 = bx + 2.2 + rx * 6.0, y0 = by + 2.2 + ry * 6.0;
-                    s.carve(x0, y0, x0 + 5.8, y0 + 5.8);
+                    const double x0 = bx + corridor + wall + rx * (room + wall);
+                    const double y0 = by + corridor + wall + ry * (room + wall);
+                    s.carve(x0, y0, x0 + room, y0 + room);
+                    const double mid = 0.5 * room - 0.5;
                     if (ry == 0)
-                        s.carve(x0 + 2.0, y0 - 0.2, x0 + 3.0, y0);  // door south
-                    else if (rx == 0)
-                        s.carve(x0 - 0.2, y0 + 2.0, x0, y0 + 3.0);  // door west
+                        s.carve(x0 + mid, y0 - wall, x0 + mid + 1.0, y0);
                     else
-                        s.carve(x0 - 0.2, y0 + 2.0, x0, y0 + 3.0);  // door to the west room
+                        s.carve(x0 - wall, y0 + mid, x0, y0 + mid + 1.0);
                 }
         }
+    s.carve(margin, end - corridor, end, end);  // north corridor closes the lattice
+    s.carve(end - corridor, margin, end, end);  // east corridor
     return s.grid();
 }
 

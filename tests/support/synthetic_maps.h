@@ -56,21 +56,22 @@ mrpt::maps::COccupancyGridMap2D makeLoopWithSpurMap(double resolution_m = 0.05);
 mrpt::maps::COccupancyGridMap2D makeOfficeMap(double resolution_m = 0.05);
 
 /** `src` moved rigidly by (yaw about the map centre, then shift) and resampled on a grid of
- * `resolution_m` (0 keeps the source resolution): every target cell takes the value of the
- * source cell under its centre (nearest neighbour). Cells mapping outside are unknown. */
-mrpt::maps::COccupancyGridMap2D transformGrid(
-    const mrpt::maps::COccupancyGridMap2D& src, double yaw_rad, const Eigen::Vector2d& shift_m,
-    double resolution_m = 0.0);
+ * `resolution_m` (0 keeps the source resolution). At the same resolution each target cell
+ * takes the source cell under its centre; when coarsening, a target cell is occupied if any of
+ * k x k points of its footprint is (as a map made at that resolution would show the same
+ * walls), else it gets their mean P(free). */
+mrpt::maps::COccupancyGridMap2D transformGrid(const mrpt::maps::COccupancyGridMap2D& src,
+                                              double yaw_rad, const Eigen::Vector2d& shift_m,
+                                              double resolution_m = 0.0);
 
 /** Where transformGrid() puts a world point of `src` (for checking positions). */
-Eigen::Vector2d transformPoint(
-    const mrpt::maps::COccupancyGridMap2D& src, double yaw_rad, const Eigen::Vector2d& shift_m,
-    const Eigen::Vector2d& p);
+Eigen::Vector2d transformPoint(const mrpt::maps::COccupancyGridMap2D& src, double yaw_rad,
+                               const Eigen::Vector2d& shift_m, const Eigen::Vector2d& p);
 
 /** Flips a fraction of the free cells that touch an obstacle to occupied, and the same
  * fraction of those obstacle cells to free: light, seeded speckle on the walls. */
-mrpt::maps::COccupancyGridMap2D addSpeckleNoise(
-    const mrpt::maps::COccupancyGridMap2D& src, double fraction, std::uint32_t seed);
+mrpt::maps::COccupancyGridMap2D addSpeckleNoise(const mrpt::maps::COccupancyGridMap2D& src,
+                                                double fraction, std::uint32_t seed);
 
 /** A large synthetic building for benchmarks: a lattice of rooms on corridors filling a grid
  * of `cells` x `cells`. */

@@ -1,11 +1,11 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include "test_paths.h"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <filesystem>
 #include <string>
-
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -26,9 +26,9 @@ std::string topoevalBin() { return TOPOEVAL_BIN; }
 std::string makeTempDir(const std::string& tag)
 {
     static std::atomic<int> counter{0};
-    const fs::path p = fs::temp_directory_path() /
-                       ("topoeval_test_" + tag + "_" + std::to_string(::getpid()) + "_" +
-                        std::to_string(counter++));
+    const fs::path p =
+        fs::temp_directory_path() / ("topoeval_test_" + tag + "_" + std::to_string(::getpid()) +
+                                     "_" + std::to_string(counter++));
     fs::remove_all(p);
     fs::create_directories(p);
     return p.string();

@@ -19,6 +19,10 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
     double occupied_min_prob = 0.65;
     /** A cell is free space when P(occupied) <= this [probability]. */
     double free_max_prob = 0.35;
+    /** Unknown cells next to free space bound it like obstacles: the graph is the skeleton of
+     * the known free space, so half-seen areas (laser fans through doors, frontiers) do not
+     * grow branches that change with every pass of the robot [bool]. */
+    bool unknown_is_obstacle = true;
     /** Keep only skeleton points lying on free cells: the skeleton stops where the map stops
      * being known (unexplored rooms, the outside of a robot map) [bool]. */
     bool skeleton_on_free_cells_only = true;
@@ -28,9 +32,15 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
     double prune_dead_end_length_m = 0.50;
     /** Dead ends into convex corners of free space are removed too: a medial-axis branch into
      * a corner is sqrt(2) times as long as the clearance it loses, so a dead end shorter than
-     * this factor times (clearance at its junction - clearance at its end) is such a branch,
+     * this factor times (clearance at its junction - clearance at its end), measured as the
+     * straight distance between its ends, is such a branch,
      * whatever the room's size. 0 disables [ratio]. */
     double corner_spur_ratio = 1.5;
+    /** A dead end whose end lies within this factor times its junction's clearance of the
+     * junction ends inside the junction's empty disc: it shows nothing the junction does not,
+     * and flips in and out with small changes of the walls (a room's end next to its door).
+     * It is removed. 0 disables [ratio]. */
+    double junction_disc_ratio = 1.0;
     /** Remaining dead-end edges shorter than this, and their end vertex, are marked spurious
      * (paper II-C) [m]. */
     double spurious_dead_end_length_m = 1.00;
@@ -40,12 +50,11 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
     /** Vertices joined by an edge shorter than this are merged into one vertex at their mean
      * position (paper II-B, last step) [m]. */
     double join_distance_m = 0.60;
-    /** An edge's direction at a vertex is measured to the path point this far along it
-     * (capped at half the edge) [m]. */
-    double edge_direction_distance_m = 0.75;
+    /** An edge's direction at a vertex is measured from the path point at a quarter of this
+     * distance to the point at this distance (capped at a quarter and half of the edge) [m]. */
+    double edge_direction_distance_m = 2.00;
 
-    void loadFromConfigFile(
-        const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
     void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
     /** \throws InputError naming the field and value, e.g.
      * "min_clearance_m = -1 violates min_clearance_m > 0". */
@@ -55,11 +64,11 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
 /** What happened while building, for summaries and benchmarks. */
 struct GraphBuildStats
 {
-    std::size_t sites = 0;             //!< Obstacle cells used as Voronoi sites.
-    std::size_t voronoi_vertices = 0;  //!< Voronoi vertices inside the grid (after merging).
-    std::size_t voronoi_edges = 0;     //!< Voronoi edges inside the grid.
+    std::size_t sites = 0;               //!< Obstacle cells used as Voronoi sites.
+    std::size_t voronoi_vertices = 0;    //!< Voronoi vertices inside the grid (after merging).
+    std::size_t voronoi_edges = 0;       //!< Voronoi edges inside the grid.
     std::size_t voronoi_edges_kept = 0;  //!< ... with enough clearance.
-    std::size_t vertices_initial = 0;  //!< Topology Graph before pruning.
+    std::size_t vertices_initial = 0;    //!< Topology Graph before pruning.
     std::size_t vertices_after_prune = 0;
     std::size_t vertices_after_alpha = 0;
     std::size_t vertices_after_component = 0;
@@ -78,8 +87,8 @@ struct GraphBuildStats
  * graph that is a pure cycle (no vertex of degree != 2) gives one degree-2 vertex on a loop
  * edge (see doc/topology_graph.md).
  * \throws InputError if `params.validate()` fails. */
-TopologyGraph buildTopologyGraph(
-    const mrpt::maps::COccupancyGridMap2D& grid, const GraphBuilderParameters& params = {},
-    GraphBuildStats* stats = nullptr);
+TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
+                                 const GraphBuilderParameters& params = {},
+                                 GraphBuildStats* stats = nullptr);
 
 }  // namespace mrpt_topoeval

@@ -16,27 +16,31 @@
 namespace mrpt_topoeval
 {
 // ---------------------------------------------------------------- parameters
-void GraphBuilderParameters::loadFromConfigFile(
-    const mrpt::config::CConfigFileBase& c, const std::string& s)
+void GraphBuilderParameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                                const std::string& s)
 {
     MRPT_LOAD_CONFIG_VAR(occupied_min_prob, double, c, s);
     MRPT_LOAD_CONFIG_VAR(free_max_prob, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(unknown_is_obstacle, bool, c, s);
     MRPT_LOAD_CONFIG_VAR(skeleton_on_free_cells_only, bool, c, s);
     MRPT_LOAD_CONFIG_VAR(min_clearance_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(prune_dead_end_length_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(corner_spur_ratio, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(junction_disc_ratio, double, c, s);
     MRPT_LOAD_CONFIG_VAR(spurious_dead_end_length_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(alpha_radius_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(join_distance_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(edge_direction_distance_m, double, c, s);
 }
 
-void GraphBuilderParameters::saveToConfigFile(
-    mrpt::config::CConfigFileBase& c, const std::string& s) const
+void GraphBuilderParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                              const std::string& s) const
 {
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         occupied_min_prob, "[probability] a cell is an obstacle (Voronoi site) if P(occ) >= this");
     MRPT_SAVE_CONFIG_VAR_COMMENT(free_max_prob, "[probability] a cell is free if P(occ) <= this");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(unknown_is_obstacle,
+                                 "[bool] unknown cells next to free space bound it like walls");
     MRPT_SAVE_CONFIG_VAR_COMMENT(skeleton_on_free_cells_only,
                                  "[bool] keep only skeleton points on free cells");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
@@ -46,14 +50,18 @@ void GraphBuilderParameters::saveToConfigFile(
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         corner_spur_ratio,
         "[ratio] remove dead ends shorter than this x their clearance drop (corner branches)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        junction_disc_ratio,
+        "[ratio] remove dead ends ending within this x their junction's clearance of it");
     MRPT_SAVE_CONFIG_VAR_COMMENT(spurious_dead_end_length_m,
                                  "[m] mark remaining dead ends shorter than this as spurious");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         alpha_radius_m, "[m] alpha-shape radius of the outer boundary (paper: 2.5); 0 = no cut");
     MRPT_SAVE_CONFIG_VAR_COMMENT(join_distance_m,
                                  "[m] merge vertices joined by an edge shorter than this");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(edge_direction_distance_m,
-                                 "[m] an edge's direction at a vertex is measured this far along it");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        edge_direction_distance_m,
+        "[m] an edge's direction at a vertex is measured up to this far along it");
 }
 
 namespace
@@ -73,21 +81,23 @@ void GraphBuilderParameters::validate() const
     auto finite = [](double v) { return std::isfinite(v); };
     require(finite(occupied_min_prob) && occupied_min_prob > 0.5 && occupied_min_prob <= 1.0,
             "occupied_min_prob", occupied_min_prob, "0.5 < occupied_min_prob <= 1");
-    require(finite(free_max_prob) && free_max_prob >= 0.0 && free_max_prob < 0.5,
-            "free_max_prob", free_max_prob, "0 <= free_max_prob < 0.5");
+    require(finite(free_max_prob) && free_max_prob >= 0.0 && free_max_prob < 0.5, "free_max_prob",
+            free_max_prob, "0 <= free_max_prob < 0.5");
     require(finite(min_clearance_m) && min_clearance_m > 0.0, "min_clearance_m", min_clearance_m,
             "min_clearance_m > 0");
     require(finite(prune_dead_end_length_m) && prune_dead_end_length_m >= 0.0,
             "prune_dead_end_length_m", prune_dead_end_length_m, "prune_dead_end_length_m >= 0");
     require(finite(corner_spur_ratio) && corner_spur_ratio >= 0.0, "corner_spur_ratio",
             corner_spur_ratio, "corner_spur_ratio >= 0");
+    require(finite(junction_disc_ratio) && junction_disc_ratio >= 0.0, "junction_disc_ratio",
+            junction_disc_ratio, "junction_disc_ratio >= 0");
     require(finite(spurious_dead_end_length_m) && spurious_dead_end_length_m >= 0.0,
             "spurious_dead_end_length_m", spurious_dead_end_length_m,
             "spurious_dead_end_length_m >= 0");
     require(finite(alpha_radius_m) && alpha_radius_m >= 0.0, "alpha_radius_m", alpha_radius_m,
             "alpha_radius_m >= 0");
-    require(finite(join_distance_m) && join_distance_m >= 0.0, "join_distance_m",
-            join_distance_m, "join_distance_m >= 0");
+    require(finite(join_distance_m) && join_distance_m >= 0.0, "join_distance_m", join_distance_m,
+            "join_distance_m >= 0");
     require(finite(edge_direction_distance_m) && edge_direction_distance_m > 0.0,
             "edge_direction_distance_m", edge_direction_distance_m,
             "edge_direction_distance_m > 0");
@@ -127,9 +137,8 @@ enum CellClass : std::uint8_t
 };
 }  // namespace
 
-TopologyGraph buildTopologyGraph(
-    const mrpt::maps::COccupancyGridMap2D& grid, const GraphBuilderParameters& params,
-    GraphBuildStats* stats_out)
+TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
+                                 const GraphBuilderParameters& params, GraphBuildStats* stats_out)
 {
     params.validate();
     GraphBuildStats stats;
@@ -148,8 +157,8 @@ TopologyGraph buildTopologyGraph(
 
     // Classify cells once, comparing quantised log-odds against thresholds converted once.
     using Cell = mrpt::maps::COccupancyGridMap2D::cellType;
-    const Cell occ_l = mrpt::maps::COccupancyGridMap2D::p2l(
-        static_cast<float>(1.0 - params.occupied_min_prob));
+    const Cell occ_l =
+        mrpt::maps::COccupancyGridMap2D::p2l(static_cast<float>(1.0 - params.occupied_min_prob));
     const Cell free_l =
         mrpt::maps::COccupancyGridMap2D::p2l(static_cast<float>(1.0 - params.free_max_prob));
     std::vector<std::uint8_t> cls(static_cast<std::size_t>(sx) * sy, kUnknown);
@@ -174,7 +183,8 @@ TopologyGraph buildTopologyGraph(
 
     // Paper II-B: the sites are the occupied cells. Only those with a non-occupied 4-neighbour
     // (or on the grid's edge) can be the nearest obstacle of a free point; the rest only make
-    // the triangulation bigger.
+    // the triangulation bigger. With unknown_is_obstacle, unknown cells bordering free space
+    // are sites too.
     internal::VoronoiInput vin;
     vin.size_x = sx;
     vin.size_y = sy;
@@ -182,11 +192,17 @@ TopologyGraph buildTopologyGraph(
     for (int cy = 0; cy < sy; ++cy)
         for (int cx = 0; cx < sx; ++cx)
         {
-            if (at(cx, cy) != kOccupied) continue;
+            const std::uint8_t c = at(cx, cy);
+            if (c == kFree || (c == kUnknown && !params.unknown_is_obstacle)) continue;
             const bool border = cx == 0 || cy == 0 || cx == sx - 1 || cy == sy - 1;
-            if (border || at(cx - 1, cy) != kOccupied || at(cx + 1, cy) != kOccupied ||
-                at(cx, cy - 1) != kOccupied || at(cx, cy + 1) != kOccupied)
-                vin.sites.emplace_back(cx, cy);
+            bool site;
+            if (c == kOccupied)
+                site = border || at(cx - 1, cy) != kOccupied || at(cx + 1, cy) != kOccupied ||
+                       at(cx, cy - 1) != kOccupied || at(cx, cy + 1) != kOccupied;
+            else
+                site = !border && (at(cx - 1, cy) == kFree || at(cx + 1, cy) == kFree ||
+                                   at(cx, cy - 1) == kFree || at(cx, cy + 1) == kFree);
+            if (site) vin.sites.emplace_back(cx, cy);
         }
     stats.sites = vin.sites.size();
     timer.lap("classify");
@@ -222,7 +238,8 @@ TopologyGraph buildTopologyGraph(
     internal::GraphEditor g;
     {
         std::vector<int> vmap(vd.node_pos.size(), -1);
-        auto vertexOf = [&](int n) {
+        auto vertexOf = [&](int n)
+        {
             if (vmap[n] < 0) vmap[n] = g.addVertex(vd.node_pos[n], vd.node_clearance[n]);
             return vmap[n];
         };
@@ -232,7 +249,8 @@ TopologyGraph buildTopologyGraph(
     stats.vertices_initial = g.numAliveVertices();
     timer.lap("chains");
 
-    g.pruneDeadEnds(params.prune_dead_end_length_m / res, params.corner_spur_ratio);
+    g.pruneDeadEnds(params.prune_dead_end_length_m / res, params.corner_spur_ratio,
+                    params.junction_disc_ratio);
     stats.vertices_after_prune = g.numAliveVertices();
     timer.lap("prune");
 
@@ -245,9 +263,12 @@ TopologyGraph buildTopologyGraph(
         stats.alpha_polygon_segments = outer.size();
         if (outer.size() >= 3)
         {
-            g.removeVerticesIf([&](const Eigen::Vector2d& p)
-                               { return !internal::pointInPolygon(outer, p); });
+            g.cutOutside([&](const Eigen::Vector2d& p)
+                         { return internal::pointInPolygon(outer, p); });
             g.dissolveDegreeTwo();
+            // The cut leaves stubs where corridors crossed the boundary: prune them as above.
+            g.pruneDeadEnds(params.prune_dead_end_length_m / res, params.corner_spur_ratio,
+                            params.junction_disc_ratio);
             const internal::CellToWorld to_world{grid.idx2x(0), grid.idx2y(0), res};
             for (const auto& p : outer) graph.outer_boundary_m.push_back(to_world(p));
         }

@@ -97,6 +97,36 @@ void GraphEditor::removeVertex(int v)
     m_v[v].alive = false;
 }
 
+void GraphEditor::reverseEdge(Edge& E)
+{
+    std::swap(E.a, E.b);
+    std::reverse(E.path.begin(), E.path.end());
+    std::reverse(E.clearance.begin(), E.clearance.end());
+}
+
+void GraphEditor::truncateEdge(int e, std::size_t keep)
+{
+    keep = std::max<std::size_t>(keep, 1);
+    const int old_end = m_e[e].b;
+    auto& inc = m_v[old_end].edges;
+    inc.erase(std::find(inc.begin(), inc.end(), e));
+    Edge& E = m_e[e];
+    E.path.resize(keep);
+    E.clearance.resize(keep);
+    if (keep == 1)
+    {
+        // The path leaves the region at once: nothing of it is inside.
+        E.path.push_back(E.path[0]);
+        E.clearance.push_back(E.clearance[0]);
+    }
+    const int nv = addVertex(m_e[e].path.back(), m_e[e].clearance.back());
+    Edge& E2 = m_e[e];
+    E2.b = nv;
+    E2.length = pathLength(E2.path);
+    m_v[nv].edges.push_back(e);
+    if (E2.length == 0.0) removeEdge(e);
+}
+
 void GraphEditor::dissolveDegreeTwo()
 {
     const int nv = static_cast<int>(m_v.size());
@@ -110,7 +140,8 @@ void GraphEditor::dissolveDegreeTwo()
 
     std::vector<Edge> new_edges;
     // Follows edge e0 from vertex v0 through degree-2 vertices up to the next anchor.
-    auto trace = [&](int v0, int e0) {
+    auto trace = [&](int v0, int e0)
+    {
         Edge out;
         out.a = v0;
         out.path = {m_v[v0].pos};
@@ -199,7 +230,7 @@ void GraphEditor::dissolveDegreeTwo()
     m_e = std::move(new_edges);
 }
 
-std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio)
+std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio, double disc_ratio)
 {
     std::size_t removed = 0;
     for (;;)
@@ -212,8 +243,13 @@ std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio)
             const bool a_end = degree(E.a) == 1, b_end = degree(E.b) == 1;
             if (!a_end && !b_end) continue;
             const int junction = a_end ? E.b : E.a, end = a_end ? E.a : E.b;
+            // A branch into a convex corner runs straight to it: its chord (not its path, which
+            // wiggles on noisy walls) is sqrt(2) times the clearance it loses.
             const double drop = m_v[junction].clearance - m_v[end].clearance;
-            if (E.length < max_length || E.length < corner_ratio * drop) victims.push_back(e);
+            const double chord = (m_v[junction].pos - m_v[end].pos).norm();
+            if (E.length < max_length || chord < corner_ratio * drop ||
+                chord < disc_ratio * m_v[junction].clearance)
+                victims.push_back(e);
         }
         if (victims.empty()) break;
         for (int e : victims)
@@ -274,9 +310,8 @@ void GraphEditor::keepLargestComponent()
     {
         const Score &x = scores[c], &y = scores[best];
         if (x.length > y.length ||
-            (x.length == y.length &&
-             (x.vertices > y.vertices ||
-              (x.vertices == y.vertices && lessPos(x.min_pos, y.min_pos)))))
+            (x.length == y.length && (x.vertices > y.vertices ||
+                                      (x.vertices == y.vertices && lessPos(x.min_pos, y.min_pos)))))
             best = c;
     }
     for (int v = 0; v < nv; ++v)

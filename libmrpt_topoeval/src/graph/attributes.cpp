@@ -20,28 +20,35 @@ double signedArea(const std::vector<Eigen::Vector2d>& path)
     return 0.5 * a;
 }
 
-// Direction in which a path leaves its first point, measured to the point `dist` along it: the
-// first Voronoi segments wiggle on a grid, a point further along shows the corridor's direction.
-double leavingAngle(const std::vector<Eigen::Vector2d>& path, double dist, bool from_start)
+// Point at arc length `dist` along a path, from its start or from its end.
+Eigen::Vector2d pointAlong(const std::vector<Eigen::Vector2d>& path, double dist, bool from_start)
 {
     const std::size_t n = path.size();
-    auto at = [&](std::size_t k) -> const Eigen::Vector2d& {
-        return from_start ? path[k] : path[n - 1 - k];
-    };
-    const Eigen::Vector2d& p0 = at(0);
-    Eigen::Vector2d target = at(n - 1);
+    auto at = [&](std::size_t k) -> const Eigen::Vector2d&
+    { return from_start ? path[k] : path[n - 1 - k]; };
     double run = 0.0;
     for (std::size_t k = 1; k < n; ++k)
     {
         const double seg = (at(k) - at(k - 1)).norm();
         if (run + seg >= dist && seg > 0.0)
-        {
-            target = at(k - 1) + (at(k) - at(k - 1)) * ((dist - run) / seg);
-            break;
-        }
+            return at(k - 1) + (at(k) - at(k - 1)) * ((dist - run) / seg);
         run += seg;
     }
-    const Eigen::Vector2d d = target - p0;
+    return at(n - 1);
+}
+
+// Direction in which an edge leaves a vertex (paper II-C, incidence angles). Measured between
+// two points along the path, at a quarter of `dist` and at `dist`: a junction sits off the
+// corridors' centre lines (where three walls are equidistant) and the first Voronoi segments
+// wiggle on a grid, while the corridor's own direction is what is stable across maps.
+double leavingAngle(const std::vector<Eigen::Vector2d>& path, double length, double dist,
+                    bool from_start)
+{
+    const double s1 = std::min(dist, 0.5 * length);
+    const double s0 = std::min(0.25 * dist, 0.25 * length);
+    Eigen::Vector2d d = pointAlong(path, s1, from_start) - pointAlong(path, s0, from_start);
+    if (d.squaredNorm() < 1e-18)
+        d = pointAlong(path, s1, from_start) - pointAlong(path, 0.0, from_start);
     return std::atan2(d.y(), d.x());
 }
 }  // namespace
@@ -57,9 +64,11 @@ void attributeGraph(const GraphEditor& g, const CellToWorld& to_world,
     std::vector<int> alive_v;
     for (int v = 0; v < static_cast<int>(gv.size()); ++v)
         if (gv[v].alive) alive_v.push_back(v);
-    std::sort(alive_v.begin(), alive_v.end(), [&](int a, int b) {
-        return std::tie(gv[a].pos.x(), gv[a].pos.y()) < std::tie(gv[b].pos.x(), gv[b].pos.y());
-    });
+    std::sort(alive_v.begin(), alive_v.end(),
+              [&](int a, int b) {
+                  return std::tie(gv[a].pos.x(), gv[a].pos.y()) <
+                         std::tie(gv[b].pos.x(), gv[b].pos.y());
+              });
     std::vector<int> vid(gv.size(), -1);
     out.vertices.clear();
     for (int v : alive_v)
@@ -106,30 +115,34 @@ void attributeGraph(const GraphEditor& g, const CellToWorld& to_world,
             E.min_clearance * res, *std::min_element(te.clearance_m.begin(), te.clearance_m.end()));
         out.edges.push_back(std::move(te));
     }
-    std::sort(out.edges.begin(), out.edges.end(), [](const TopoEdge& a, const TopoEdge& b) {
-        const auto& pa = a.path_m[std::min<std::size_t>(1, a.path_m.size() - 1)];
-        const auto& pb = b.path_m[std::min<std::size_t>(1, b.path_m.size() - 1)];
-        return std::make_tuple(a.from, a.to, a.length_m, pa.x(), pa.y()) <
-               std::make_tuple(b.from, b.to, b.length_m, pb.x(), pb.y());
-    });
+    std::sort(out.edges.begin(), out.edges.end(),
+              [](const TopoEdge& a, const TopoEdge& b)
+              {
+                  const auto& pa = a.path_m[std::min<std::size_t>(1, a.path_m.size() - 1)];
+                  const auto& pb = b.path_m[std::min<std::size_t>(1, b.path_m.size() - 1)];
+                  return std::make_tuple(a.from, a.to, a.length_m, pa.x(), pa.y()) <
+                         std::make_tuple(b.from, b.to, b.length_m, pb.x(), pb.y());
+              });
 
     // Paper II-C: the ring of incident edges ordered by angle, kept as angle differences.
     for (int e = 0; e < static_cast<int>(out.edges.size()); ++e)
     {
         TopoEdge& te = out.edges[e];
         te.id = e;
-        const double dist = std::min(params.edge_direction_distance_m, 0.5 * te.length_m);
+        const double dist = params.edge_direction_distance_m;
         out.vertices[te.from].ring.push_back(
-            {e, te.to, true, leavingAngle(te.path_m, dist, true)});
+            {e, te.to, true, leavingAngle(te.path_m, te.length_m, dist, true)});
         out.vertices[te.to].ring.push_back(
-            {e, te.from, false, leavingAngle(te.path_m, dist, false)});
+            {e, te.from, false, leavingAngle(te.path_m, te.length_m, dist, false)});
     }
     for (TopoVertex& v : out.vertices)
     {
-        std::sort(v.ring.begin(), v.ring.end(), [](const Incidence& a, const Incidence& b) {
-            return std::make_tuple(a.angle_rad, a.edge, !a.at_from) <
-                   std::make_tuple(b.angle_rad, b.edge, !b.at_from);
-        });
+        std::sort(v.ring.begin(), v.ring.end(),
+                  [](const Incidence& a, const Incidence& b)
+                  {
+                      return std::make_tuple(a.angle_rad, a.edge, !a.at_from) <
+                             std::make_tuple(b.angle_rad, b.edge, !b.at_from);
+                  });
         const std::size_t n = v.ring.size();
         v.angle_diffs_rad.resize(n);
         for (std::size_t i = 0; i < n; ++i)

@@ -5,7 +5,6 @@
 // cell units here; GraphBuilder converts to metres at the end.
 
 #include <Eigen/Core>
-
 #include <cstddef>
 #include <vector>
 
@@ -47,18 +46,34 @@ public:
      * of degree 0 are removed. Linear in the graph size; compacts the storage. */
     void dissolveDegreeTwo();
 
-    /** Removes dead-end edges shorter than `max_length`, or shorter than `corner_ratio` times
-     * the clearance they lose from junction to end, with their dead-end vertex; dissolves
-     * degree-2 vertices after each round, until none is left. Returns edges removed. */
-    std::size_t pruneDeadEnds(double max_length, double corner_ratio);
+    /** Removes dead-end edges, with their dead-end vertex, that are shorter than `max_length`,
+     * or whose chord is shorter than `corner_ratio` times the clearance they lose from junction
+     * to end, or than `disc_ratio` times the junction's clearance; dissolves degree-2 vertices
+     * after each round, until none is left. Returns edges removed. */
+    std::size_t pruneDeadEnds(double max_length, double corner_ratio, double disc_ratio);
 
-    /** Removes the vertices for which `inside(pos)` is false, with their edges. */
-    template <class Pred>
-    std::size_t removeVerticesIf(Pred outside)
+    /** Cuts the graph to a region (paper II-B, the alpha-shape cut): vertices outside go with
+     * their edges, except that an edge from an inside vertex to an outside one is cut where
+     * its path leaves the region and ends in a new dead end there, so a corridor that leaves
+     * the map through an open door keeps its inside part. Returns vertices removed. */
+    template <class Inside>
+    std::size_t cutOutside(Inside inside)
     {
+        const int nv = static_cast<int>(m_v.size());
+        std::vector<char> in(nv, 0);
+        for (int v = 0; v < nv; ++v) in[v] = m_v[v].alive && inside(m_v[v].pos);
+        for (int e = 0; e < static_cast<int>(m_e.size()); ++e)
+        {
+            Edge& E = m_e[e];
+            if (!E.alive || in[E.a] == in[E.b]) continue;
+            if (!in[E.a]) reverseEdge(E);  // now a is inside, b outside
+            std::size_t k = 1;
+            while (k < E.path.size() && inside(E.path[k])) ++k;
+            truncateEdge(e, k);  // keeps path[0..k-1], ends at a new vertex
+        }
         std::size_t n = 0;
-        for (int v = 0; v < static_cast<int>(m_v.size()); ++v)
-            if (m_v[v].alive && outside(m_v[v].pos))
+        for (int v = 0; v < nv; ++v)
+            if (m_v[v].alive && !in[v])
             {
                 removeVertex(v);
                 ++n;
@@ -79,6 +94,10 @@ private:
     void removeEdge(int e);
     void removeVertex(int v);
     void compact();
+    static void reverseEdge(Edge& E);
+    /** Keeps the first `keep` path points of edge e (a to the cut) and ends it at a new
+     * vertex there, detached from the old end b. */
+    void truncateEdge(int e, std::size_t keep);
     static double pathLength(const std::vector<Eigen::Vector2d>& path);
 
     std::vector<Vertex> m_v;

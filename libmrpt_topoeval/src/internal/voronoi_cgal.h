@@ -4,7 +4,6 @@
 // The only interface to CGAL (paper II-A/II-B): everything in cell units, no CGAL types.
 
 #include <Eigen/Core>
-
 #include <cstdint>
 #include <vector>
 
@@ -26,14 +25,14 @@ struct VoronoiInput
 /** The filtered Voronoi diagram as a plain graph, plus the alpha-shape boundary. */
 struct VoronoiSkeleton
 {
-    std::vector<Eigen::Vector2d> node_pos;     //!< Voronoi vertices [cells].
-    std::vector<double> node_clearance;        //!< Distance to the nearest site [cells].
+    std::vector<Eigen::Vector2d> node_pos;  //!< Voronoi vertices [cells].
+    std::vector<double> node_clearance;     //!< Distance to the nearest site [cells].
     struct Edge
     {
         int a = -1, b = -1;
         double min_clearance = 0.0;  //!< Smallest site distance along the segment [cells].
     };
-    std::vector<Edge> edges;  //!< Voronoi segments kept by the clearance filter.
+    std::vector<Edge> edges;      //!< Voronoi segments kept by the clearance filter.
     std::size_t edges_total = 0;  //!< Voronoi segments between kept nodes before the filter.
     /** Boundary segments of the regularized alpha shape (interior faces: circumradius <=
      * alpha), each oriented with the interior on its left [cells]. */

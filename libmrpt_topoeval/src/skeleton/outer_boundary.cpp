@@ -26,7 +26,8 @@ std::vector<Eigen::Vector2d> longestBoundaryPolygon(
 {
     // Sort for an order that does not depend on the triangulation's storage.
     std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> segs = segments;
-    auto lessSeg = [](const auto& s, const auto& t) {
+    auto lessSeg = [](const auto& s, const auto& t)
+    {
         return std::make_tuple(s.first.x(), s.first.y(), s.second.x(), s.second.y()) <
                std::make_tuple(t.first.x(), t.first.y(), t.second.x(), t.second.y());
     };

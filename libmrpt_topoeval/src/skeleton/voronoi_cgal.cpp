@@ -2,6 +2,8 @@
 // The only translation unit that includes CGAL. Built with CGAL_NDEBUG: CGAL's debug checks make
 // the dual() calls linear each (quadratic extraction; see the notes in doc/).
 
+#include "internal/voronoi_cgal.h"
+
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -10,8 +12,6 @@
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
-
-#include "internal/voronoi_cgal.h"
 
 namespace mrpt_topoeval::internal
 {
@@ -42,7 +42,8 @@ std::uint64_t nodeKey(double x, double y)
 
 // Smallest distance from site p to the segment a-b: along a Voronoi edge the distance to its two
 // sites is equal, and it is smallest at the foot of the perpendicular from p (if on the segment).
-double segmentClearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p)
+double segmentClearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                        const Eigen::Vector2d& p)
 {
     const Eigen::Vector2d ab = b - a;
     const double len2 = ab.squaredNorm();

@@ -1,0 +1,214 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// `topoeval graph MAP`: builds the Topology Graph of one map, prints a one-screen summary and
+// optionally writes it as JSON and as a picture.
+
+#include <mrpt_topoeval/GraphBuilder.h>
+#include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/graph_json.h>
+#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/output.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "cli_common.h"
+
+namespace fs = std::filesystem;
+
+namespace mrpt_topoeval::cli
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+std::string fmt(const char* format, double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), format, v);
+    return buf;
+}
+
+// Pictures stay below ~64 megapixels by default: 2 px per cell, 1 for big maps.
+constexpr int kLargeMapCells = 4000;
+
+/** The graph builder's steps in pipeline order for the summary; steps not listed follow
+ * alphabetically, so a new step still shows up. */
+std::vector<std::pair<std::string, double>> orderedTimings(const std::map<std::string, double>& t)
+{
+    static const std::vector<std::string> kOrder = {
+        "load_map",  "classify",          "voronoi", "chains",    "prune",
+        "alpha_cut", "largest_component", "join",    "attributes"};
+    std::vector<std::pair<std::string, double>> out;
+    for (const auto& name : kOrder)
+        if (const auto it = t.find(name); it != t.end()) out.emplace_back(*it);
+    for (const auto& kv : t)
+        if (kv.first != "total" &&
+            std::find(kOrder.begin(), kOrder.end(), kv.first) == kOrder.end())
+            out.emplace_back(kv);
+    if (const auto it = t.find("total"); it != t.end()) out.emplace_back("build total", it->second);
+    return out;
+}
+
+void printSummary(std::ostream& os, const LoadedMap& lm, const TopologyGraph& g,
+                  const std::map<std::string, double>& timing_ms, double run_ms,
+                  const std::vector<std::string>& written)
+{
+    const MapInfo& m = g.map;
+    os << "map        " << lm.file << " (" << lm.format << ")\n";
+    os << "size       " << m.size_x << " x " << m.size_y << " cells, "
+       << fmt("%.2f", m.x_max_m - m.x_min_m) << " x " << fmt("%.2f", m.y_max_m - m.y_min_m)
+       << " m, " << fmt("%g", m.resolution_m) << " m/cell\n";
+    os << "extent     x " << fmt("%.2f", m.x_min_m) << " .. " << fmt("%.2f", m.x_max_m) << " m, y "
+       << fmt("%.2f", m.y_min_m) << " .. " << fmt("%.2f", m.y_max_m) << " m\n";
+    os << "cells      " << m.occupied_cells << " occupied, " << m.free_cells << " free\n";
+    os << "vertices   " << g.vertices.size() << " (" << g.numNonSpuriousVertices()
+       << " non-spurious)\n";
+    os << "edges      " << g.numHalfEdges() << " half edges (" << g.edges.size()
+       << " edges), total length " << fmt("%.2f", g.totalEdgeLength()) << " m\n";
+    os << "degrees    ";
+    const auto hist = g.degreeHistogram();
+    bool any = false;
+    for (std::size_t d = 0; d < hist.size(); ++d)
+        if (hist[d] > 0)
+        {
+            os << (any ? ", " : "") << "deg " << d << ": " << hist[d];
+            any = true;
+        }
+    os << (any ? " (non-spurious vertices)" : "none") << "\n";
+    os << "time [ms]  ";
+    for (const auto& [step, ms] : orderedTimings(timing_ms))
+        os << step << " " << fmt("%.1f", ms) << ", ";
+    os << "run " << fmt("%.1f", run_ms) << "\n";
+    for (const auto& w : written) os << "wrote      " << w << "\n";
+}
+
+bool endsWithPng(const std::string& path)
+{
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    return ext == ".png";
+}
+}  // namespace
+
+int verbGraph(int argc, char** argv)
+{
+    const auto t_run = Clock::now();
+    VerbCommandLine cl(
+        "graph",
+        "Builds the Topology Graph of a grid map (Schwertfeger & Birk 2013, section II) and "
+        "prints a summary: vertices, half edges, total edge length, degrees, time per step. "
+        "--json writes the graph (coordinates in metres in the map's frame), --image draws it "
+        "over the map. Existing files are never replaced without --force; outputs are written "
+        "only after everything succeeded. Exit codes: 0 ok, 1 internal error, 2 bad input or "
+        "usage, 3 output error.");
+    TCLAP::CmdLine& cmd = cl.cmd();
+    // Declared in reverse order of the usage line (TCLAP lists the last added first).
+    TCLAP::SwitchArg force_arg("f", "force", "Replace existing output files.", cmd);
+    TCLAP::SwitchArg no_ids_arg("", "no-ids", "Do not write vertex ids in the --image picture.",
+                                cmd);
+    TCLAP::ValueArg<int> scale_arg(
+        "", "image-scale",
+        "Pixels per map cell in the --image picture, 1..8 (default: 2; 1 for maps over " +
+            std::to_string(kLargeMapCells) + " cells wide or high).",
+        false, 0, "N", cmd);
+    TCLAP::ValueArg<std::string> image_arg(
+        "i", "image", "Draw the graph over the map into this PNG file.", false, "", "OUT.png", cmd);
+    TCLAP::ValueArg<std::string> json_arg("j", "json", "Write the graph as JSON to this file.",
+                                          false, "", "OUT.json", cmd);
+    TCLAP::ValueArg<double> res_arg(
+        "r", "resolution",
+        "Cell size for plain images and .simplemap files [m/cell]; overrides [MapLoad] "
+        "resolution_m (default 0.05).",
+        false, 0.0, "R", cmd);
+    TCLAP::ValueArg<std::string> config_arg(
+        "c", "config", "Parameters from this INI file (see 'topoeval config').", false, "", "F.ini",
+        cmd);
+    TCLAP::UnlabeledValueArg<std::string> map_arg(
+        "MAP",
+        "The map: ROS map_server .yaml, image (.png .pgm .bmp .jpg), MRPT .gridmap[.gz] or "
+        ".simplemap[.gz].",
+        false, "", "MAP", cmd);
+    if (const auto done = cl.parse(argc, argv)) return *done;
+
+    const std::string map_path = map_arg.getValue();
+    if (map_path.empty()) throw cl.usageError("missing the MAP argument");
+    const std::string json_path = json_arg.getValue();
+    const std::string image_path = image_arg.getValue();
+    const bool force = force_arg.getValue();
+    if (json_arg.isSet() && json_path.empty()) throw cl.usageError("--json needs a file name");
+    if (image_arg.isSet() && image_path.empty()) throw cl.usageError("--image needs a file name");
+    if (!image_path.empty() && !endsWithPng(image_path))
+        throw cl.usageError("--image " + image_path + ": pictures are PNG; use a .png file name");
+    if (scale_arg.isSet() && (scale_arg.getValue() < 1 || scale_arg.getValue() > 8))
+        throw cl.usageError("--image-scale " + std::to_string(scale_arg.getValue()) +
+                            " violates 1 <= N <= 8");
+    if (!json_path.empty() && !image_path.empty() &&
+        fs::absolute(json_path).lexically_normal() == fs::absolute(image_path).lexically_normal())
+        throw cl.usageError("--json and --image name the same file " + json_path);
+
+    const Parameters params =
+        loadParameters(config_arg.getValue(),
+                       res_arg.isSet() ? std::optional<double>(res_arg.getValue()) : std::nullopt);
+
+    // Refuse unwritable outputs now rather than after the work.
+    const std::vector<std::string> inputs = {map_path, config_arg.getValue()};
+    if (!json_path.empty()) checkOutputPath(json_path, force, inputs);
+    if (!image_path.empty()) checkOutputPath(image_path, force, inputs);
+
+    auto t0 = Clock::now();
+    const LoadedMap lm = loadMap(map_path, params.map_load);
+    const double load_ms = msSince(t0);
+
+    GraphBuildStats stats;
+    TopologyGraph graph = buildTopologyGraph(lm.grid, params.graph, &stats);
+    graph.map.file = lm.file;
+    stats.timing_ms["load_map"] = load_ms;
+
+    if (graph.vertices.empty() && graph.warnings.empty())
+        graph.warnings.push_back("the Topology Graph is empty");
+    for (const auto& w : graph.warnings) printWarning(lm.file + ": " + w);
+
+    // Everything is produced in memory first: a failure leaves no output behind.
+    std::string json_text;
+    if (!json_path.empty()) json_text = graphToJson(graph, &stats);
+    mrpt::img::CImage picture;
+    if (!image_path.empty())
+    {
+        t0 = Clock::now();
+        DrawOptions draw;
+        const bool large = std::max(graph.map.size_x, graph.map.size_y) > kLargeMapCells;
+        draw.scale = scale_arg.isSet() ? scale_arg.getValue() : (large ? 1 : 2);
+        draw.draw_ids = !no_ids_arg.getValue();
+        picture = drawTopologyGraph(lm.grid, graph, draw);
+        stats.timing_ms["draw"] = msSince(t0);
+    }
+
+    std::vector<std::string> written;
+    if (!json_path.empty())
+    {
+        writeFileAtomic(json_path, json_text, force);
+        written.push_back(json_path);
+    }
+    if (!image_path.empty())
+    {
+        writePngAtomic(image_path, picture, force);
+        written.push_back(image_path);
+    }
+
+    printSummary(std::cout, lm, graph, stats.timing_ms, msSince(t_run), written);
+    flushStdout();
+    return kExitOk;
+}
+
+}  // namespace mrpt_topoeval::cli

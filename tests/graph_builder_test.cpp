@@ -1,0 +1,344 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// Topology Graph construction (paper II-B, II-C) on maps built in code whose graph is known.
+// The expected positions come from the geometry: a corridor of width w ends in a dead end w/2
+// before its end wall; a T-junction of corridors of width 1.5 m sits where the top wall and the
+// branch's two corners are equidistant (y = 6.5625 for the map below).
+
+#include <gtest/gtest.h>
+#include <mrpt_topoeval/GraphBuilder.h>
+#include <mrpt_topoeval/errors.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "synthetic_maps.h"
+
+using namespace mrpt_topoeval;
+using namespace mrpt_topoeval::testing;
+
+namespace
+{
+constexpr double kDeg = M_PI / 180.0;
+// Cell centres and the diagonal walls of the discretised skeleton move vertices by up to about
+// a cell and a half.
+constexpr double kPosTol = 0.12;
+
+const TopoVertex* vertexNear(const TopologyGraph& g, double x, double y, double tol = kPosTol)
+{
+    for (const auto& v : g.vertices)
+        if ((v.position_m - Eigen::Vector2d(x, y)).norm() < tol) return &v;
+    return nullptr;
+}
+
+std::vector<double> sortedDiffsDeg(const TopoVertex& v)
+{
+    std::vector<double> d;
+    for (double a : v.angle_diffs_rad) d.push_back(a / kDeg);
+    std::sort(d.begin(), d.end());
+    return d;
+}
+
+// Invariants every graph must satisfy, whatever the map.
+void expectWellFormed(const TopologyGraph& g)
+{
+    for (std::size_t i = 0; i < g.vertices.size(); ++i)
+    {
+        const TopoVertex& v = g.vertices[i];
+        EXPECT_EQ(v.id, static_cast<int>(i));
+        EXPECT_NE(v.degree(), 0);
+        if (v.degree() == 2)
+        {
+            EXPECT_EQ(v.ring[0].edge, v.ring[1].edge) << "only ring vertices";
+        }
+        double sum = 0.0;
+        for (double d : v.angle_diffs_rad)
+        {
+            EXPECT_GE(d, 0.0);
+            sum += d;
+        }
+        EXPECT_NEAR(sum, 2 * M_PI, 1e-9);
+        for (std::size_t k = 1; k < v.ring.size(); ++k)
+            EXPECT_LE(v.ring[k - 1].angle_rad, v.ring[k].angle_rad);
+    }
+    for (std::size_t i = 0; i < g.edges.size(); ++i)
+    {
+        const TopoEdge& e = g.edges[i];
+        EXPECT_EQ(e.id, static_cast<int>(i));
+        ASSERT_GE(e.path_m.size(), 2u);
+        EXPECT_EQ(e.path_m.size(), e.clearance_m.size());
+        EXPECT_LE(e.from, e.to);
+        EXPECT_LT((e.path_m.front() - g.vertices[e.from].position_m).norm(), 1e-9);
+        EXPECT_LT((e.path_m.back() - g.vertices[e.to].position_m).norm(), 1e-9);
+        EXPECT_GT(e.length_m, 0.0);
+        EXPECT_LE(e.min_clearance_m, e.mean_clearance_m + 1e-12);
+        EXPECT_EQ(e.dead_end, g.vertices[e.from].degree() == 1 || g.vertices[e.to].degree() == 1);
+    }
+}
+}  // namespace
+
+TEST(GraphBuilder, DefaultsAreThePapers)
+{
+    const GraphBuilderParameters p;
+    EXPECT_DOUBLE_EQ(p.min_clearance_m, 0.30);  // paper Fig. 2
+    EXPECT_DOUBLE_EQ(p.alpha_radius_m, 2.50);   // paper Fig. 3
+    EXPECT_NO_THROW(p.validate());
+}
+
+TEST(GraphBuilder, TJunction)
+{
+    const TopologyGraph g = buildTopologyGraph(makeTJunctionMap());
+    expectWellFormed(g);
+    ASSERT_EQ(g.vertices.size(), 4u);
+    ASSERT_EQ(g.edges.size(), 3u);
+
+    const TopoVertex* j = vertexNear(g, 7.0, 6.5625);
+    ASSERT_NE(j, nullptr);
+    EXPECT_EQ(j->degree(), 3);
+    // Edges leave west, east and south: angles of 90, 90 and 180 degrees between them.
+    const auto d = sortedDiffsDeg(*j);
+    EXPECT_NEAR(d[0], 90.0, 8.0);
+    EXPECT_NEAR(d[1], 90.0, 8.0);
+    EXPECT_NEAR(d[2], 180.0, 8.0);
+    EXPECT_NEAR(j->min_angle_rad / kDeg, d[0], 1e-9);
+    EXPECT_NEAR(j->max_angle_rad / kDeg, d[2], 1e-9);
+
+    for (auto [x, y] : {std::pair{1.75, 6.75}, {12.25, 6.75}, {7.0, 1.75}})
+    {
+        const TopoVertex* e = vertexNear(g, x, y);
+        ASSERT_NE(e, nullptr) << "dead end at " << x << "," << y;
+        EXPECT_EQ(e->degree(), 1);
+        EXPECT_FALSE(e->spurious);
+        EXPECT_NEAR(e->clearance_m, 0.75, 0.08);
+    }
+    // Path lengths: 5.25 m west and east (plus the junction's offset), 4.81 m south.
+    std::vector<double> len;
+    for (const auto& e : g.edges) len.push_back(e.length_m);
+    std::sort(len.begin(), len.end());
+    EXPECT_NEAR(len[0], 4.81, 0.15);
+    EXPECT_NEAR(len[1], 5.28, 0.15);
+    EXPECT_NEAR(len[2], 5.28, 0.15);
+    for (const auto& e : g.edges)
+    {
+        EXPECT_TRUE(e.dead_end);
+        EXPECT_FALSE(e.spurious);
+        EXPECT_NEAR(e.min_clearance_m, 0.75, 0.08);  // half the corridor width
+    }
+    EXPECT_NEAR(g.totalEdgeLength(), 4.81 + 2 * 5.28, 0.3);
+    EXPECT_EQ(g.numHalfEdges(), 6u);
+}
+
+TEST(GraphBuilder, PlusCrossing)
+{
+    const TopologyGraph g = buildTopologyGraph(makePlusMap());
+    expectWellFormed(g);
+    ASSERT_EQ(g.vertices.size(), 5u);
+    ASSERT_EQ(g.edges.size(), 4u);
+    const TopoVertex* c = vertexNear(g, 8.0, 8.0);
+    ASSERT_NE(c, nullptr);
+    EXPECT_EQ(c->degree(), 4);
+    for (double d : sortedDiffsDeg(*c)) EXPECT_NEAR(d, 90.0, 5.0);
+    for (auto [x, y] : {std::pair{2.75, 8.0}, {13.25, 8.0}, {8.0, 2.75}, {8.0, 13.25}})
+    {
+        const TopoVertex* e = vertexNear(g, x, y);
+        ASSERT_NE(e, nullptr) << x << "," << y;
+        EXPECT_EQ(e->degree(), 1);
+    }
+    for (const auto& e : g.edges) EXPECT_NEAR(e.length_m, 5.25, 0.12);
+    const auto hist = g.degreeHistogram();
+    ASSERT_EQ(hist.size(), 5u);
+    EXPECT_EQ(hist[1], 4u);
+    EXPECT_EQ(hist[4], 1u);
+}
+
+TEST(GraphBuilder, TwoRoomsWithADoor)
+{
+    // Each room's skeleton is an X into its corners; those branches are corner spurs and go,
+    // leaving the two room centres joined through the door.
+    const TopologyGraph g = buildTopologyGraph(makeTwoRoomsMap());
+    expectWellFormed(g);
+    ASSERT_EQ(g.vertices.size(), 2u);
+    ASSERT_EQ(g.edges.size(), 1u);
+    EXPECT_NE(vertexNear(g, 3.0, 3.0), nullptr);
+    EXPECT_NE(vertexNear(g, 7.2, 3.0), nullptr);
+    const TopoEdge& e = g.edges[0];
+    EXPECT_NEAR(e.length_m, 4.2, 0.12);
+    EXPECT_NEAR(e.min_clearance_m, 0.5, 0.08);  // half the door
+    EXPECT_NEAR(g.vertices[0].clearance_m, 2.0, 0.08);
+    // The door is at x = 5.1: the path must go through it.
+    const bool through_door = std::any_of(
+        e.path_m.begin(), e.path_m.end(),
+        [](const auto& p) { return std::abs(p.x() - 5.1) < 0.2 && std::abs(p.y() - 3.0) < 0.3; });
+    EXPECT_TRUE(through_door);
+}
+
+TEST(GraphBuilder, CorridorLoopIsOneRingVertex)
+{
+    // A pure cycle has no vertex of degree != 2. We return one degree-2 vertex (the point of
+    // largest clearance, ties by position) carrying the cycle as a counter-clockwise loop edge,
+    // and say so in a warning, so that the map's topology (one loop) is not lost.
+    const TopologyGraph g = buildTopologyGraph(makeCorridorLoopMap());
+    expectWellFormed(g);
+    ASSERT_EQ(g.vertices.size(), 1u);
+    ASSERT_EQ(g.edges.size(), 1u);
+    EXPECT_EQ(g.vertices[0].degree(), 2);
+    EXPECT_EQ(g.edges[0].from, 0);
+    EXPECT_EQ(g.edges[0].to, 0);
+    EXPECT_FALSE(g.edges[0].dead_end);
+    // The centre line is a 7.5 m square with rounded corners.
+    EXPECT_GT(g.edges[0].length_m, 27.0);
+    EXPECT_LT(g.edges[0].length_m, 30.5);
+    ASSERT_EQ(g.warnings.size(), 1u);
+    EXPECT_NE(g.warnings[0].find("single cycle"), std::string::npos);
+}
+
+TEST(GraphBuilder, LoopWithSpurHasALoopEdge)
+{
+    const TopologyGraph g = buildTopologyGraph(makeLoopWithSpurMap());
+    expectWellFormed(g);
+    ASSERT_EQ(g.vertices.size(), 2u);
+    ASSERT_EQ(g.edges.size(), 2u);
+    const TopoVertex* j = vertexNear(g, 9.9, 6.0, 0.2);
+    ASSERT_NE(j, nullptr);
+    EXPECT_EQ(j->degree(), 3);  // the loop counts twice
+    int loops = 0;
+    for (const auto& e : g.edges) loops += e.from == e.to;
+    EXPECT_EQ(loops, 1);
+    EXPECT_TRUE(g.warnings.empty());
+}
+
+TEST(GraphBuilder, ShortDeadEndIsSpurious)
+{
+    // A T whose branch is only 1 m deep: its dead-end edge (~0.8 m) is kept by pruning
+    // (> 0.5 m) but marked spurious (< 1 m), with its end vertex (paper II-C).
+    GridSketch s(14.0, 9.0);
+    s.carve(1.0, 6.0, 13.0, 7.5).carve(6.25, 5.0, 7.75, 6.0);
+    const TopologyGraph g = buildTopologyGraph(s.grid());
+    expectWellFormed(g);
+    ASSERT_EQ(g.vertices.size(), 4u);
+    int spurious_edges = 0;
+    for (const auto& e : g.edges)
+        if (e.spurious)
+        {
+            ++spurious_edges;
+            EXPECT_LT(e.length_m, 1.0);
+            EXPECT_GT(e.length_m, 0.5);
+        }
+    EXPECT_EQ(spurious_edges, 1);
+    EXPECT_EQ(g.numNonSpuriousVertices(), 3u);
+
+    GraphBuilderParameters p;
+    p.spurious_dead_end_length_m = 0.5;
+    EXPECT_EQ(buildTopologyGraph(s.grid(), p).numNonSpuriousVertices(), 4u);
+    p.prune_dead_end_length_m = 1.2;  // now pruned away: a straight corridor of two dead ends
+    EXPECT_EQ(buildTopologyGraph(s.grid(), p).vertices.size(), 2u);
+}
+
+TEST(GraphBuilder, AlphaShapeCutsTheOutside)
+{
+    // A plus-shaped building with 0.3 m walls standing in open free space with pillars; its
+    // east arm is open to the outside. The outside's skeleton (around the pillars) is cut by
+    // the outer alpha polygon, and the east corridor is cut at the doorway into a dead end.
+    GridSketch s(30.0, 22.0);
+    s.carve(0.0, 0.0, 30.0, 22.0);
+    s.fill(4.7, 9.7, 17.3, 12.3).fill(9.7, 4.7, 12.3, 17.3);
+    s.carve(5.0, 10.0, 17.3, 12.0).carve(10.0, 5.0, 12.0, 17.0);
+    for (double y : {3.0, 8.0, 14.0, 19.0})
+        for (double x : {21.0, 25.0}) s.fill(x, y, x + 0.6, y + 0.6);
+    GraphBuildStats st;
+    const TopologyGraph g = buildTopologyGraph(s.grid(), {}, &st);
+    expectWellFormed(g);
+    EXPECT_GT(st.vertices_after_prune, st.vertices_after_alpha);
+    ASSERT_EQ(g.vertices.size(), 5u);
+    const TopoVertex* centre = vertexNear(g, 11.0, 11.0);
+    ASSERT_NE(centre, nullptr);
+    EXPECT_EQ(centre->degree(), 4);
+    for (const auto& v : g.vertices) EXPECT_LT(v.position_m.x(), 17.6);
+    EXPECT_GE(g.outer_boundary_m.size(), 3u);
+
+    // Without the cut the pillars' skeleton is part of the graph.
+    GraphBuilderParameters no_cut;
+    no_cut.alpha_radius_m = 0.0;
+    EXPECT_GT(buildTopologyGraph(s.grid(), no_cut).vertices.size(), 5u);
+}
+
+TEST(GraphBuilder, UnknownSpaceStopsTheSkeleton)
+{
+    // The east half of the corridor is unexplored (unknown): the skeleton ends where the known
+    // free space ends, as a robot map that has not seen the rest would.
+    GridSketch s(14.0, 4.0);
+    s.carve(1.0, 1.25, 13.0, 2.75).unknown(7.0, 0.0, 14.0, 4.0);
+    const TopologyGraph g = buildTopologyGraph(s.grid());
+    ASSERT_EQ(g.vertices.size(), 2u);
+    for (const auto& v : g.vertices) EXPECT_LT(v.position_m.x(), 7.05);
+}
+
+TEST(GraphBuilder, NoObstaclesOrNoFreeSpaceGiveAnEmptyGraphAndAWarning)
+{
+    GridSketch solid(5.0, 5.0);
+    TopologyGraph g = buildTopologyGraph(solid.grid());
+    EXPECT_TRUE(g.vertices.empty());
+    ASSERT_EQ(g.warnings.size(), 1u);
+    EXPECT_NE(g.warnings[0].find("no free space"), std::string::npos);
+
+    GridSketch open(5.0, 5.0);
+    open.carve(0.0, 0.0, 5.0, 5.0);
+    g = buildTopologyGraph(open.grid());
+    EXPECT_TRUE(g.vertices.empty());
+    ASSERT_EQ(g.warnings.size(), 1u);
+    EXPECT_NE(g.warnings[0].find("no obstacles"), std::string::npos);
+
+    // Narrower than 2 x min_clearance everywhere: nothing survives the clearance filter.
+    GridSketch narrow(6.0, 3.0);
+    narrow.carve(1.0, 1.0, 5.0, 1.4);
+    g = buildTopologyGraph(narrow.grid());
+    EXPECT_TRUE(g.vertices.empty());
+    EXPECT_EQ(g.warnings.size(), 1u);
+
+    // A single cell map.
+    mrpt::maps::COccupancyGridMap2D one(0.0, 0.05, 0.0, 0.05, 0.05);
+    EXPECT_TRUE(buildTopologyGraph(one).vertices.empty());
+}
+
+TEST(GraphBuilder, InvalidParametersAreRejectedWithTheirName)
+{
+    GraphBuilderParameters p;
+    p.min_clearance_m = -1;
+    try
+    {
+        buildTopologyGraph(makePlusMap(), p);
+        FAIL() << "expected InputError";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_STREQ(e.what(), "[GraphBuilder] min_clearance_m = -1 violates min_clearance_m > 0");
+    }
+    p = {};
+    p.alpha_radius_m = std::nan("");
+    EXPECT_THROW(p.validate(), InputError);
+    p = {};
+    p.occupied_min_prob = 0.3;
+    EXPECT_THROW(p.validate(), InputError);
+}
+
+TEST(GraphBuilder, OfficeHasTheExpectedJunctionsAndIsDeterministic)
+{
+    const auto grid = makeOfficeMap();
+    const TopologyGraph a = buildTopologyGraph(grid);
+    const TopologyGraph b = buildTopologyGraph(grid);
+    expectWellFormed(a);
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    ASSERT_EQ(a.edges.size(), b.edges.size());
+    for (std::size_t i = 0; i < a.vertices.size(); ++i)
+        EXPECT_EQ(a.vertices[i].position_m, b.vertices[i].position_m);
+    for (std::size_t i = 0; i < a.edges.size(); ++i)
+        EXPECT_EQ(a.edges[i].path_m, b.edges[i].path_m);
+
+    // The corridor loop's four corners and the doors on it are junctions of degree 3; every
+    // room and dead-end corridor ends in a dead end; no junction of degree > 3.
+    const auto hist = a.degreeHistogram(true);
+    ASSERT_GE(hist.size(), 4u);
+    EXPECT_EQ(hist.size(), 4u);
+    EXPECT_EQ(hist[2], 0u);
+    EXPECT_GE(hist[3], 10u);
+    EXPECT_GE(hist[1], 8u);
+}

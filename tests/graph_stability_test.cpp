@@ -1,0 +1,143 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// Paper II-D: the Topology Graph must be stable across different grids of the same place.
+// The same map rotated by an arbitrary angle, shifted, resampled from 0.05 to 0.1 m, or with
+// light speckle noise must give the same number of non-spurious vertices (within 10%) and the
+// same degree histogram (within 10%: at most 10% of the vertices would have to change degree,
+// i.e. half the L1 distance between the histograms over the vertex count).
+
+#include <gtest/gtest.h>
+#include <mrpt_topoeval/GraphBuilder.h>
+#include <mrpt_topoeval/Parameters.h>
+#include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/output.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "synthetic_maps.h"
+#include "test_paths.h"
+
+using namespace mrpt_topoeval;
+using namespace mrpt_topoeval::testing;
+using mrpt::maps::COccupancyGridMap2D;
+
+namespace
+{
+struct Perturbation
+{
+    std::string name;
+    double yaw_deg = 0.0;
+    Eigen::Vector2d shift{0.0, 0.0};
+    double resolution_m = 0.0;  // 0: keep
+    double noise = 0.0;
+};
+
+const std::vector<Perturbation>& perturbations()
+{
+    static const std::vector<Perturbation> p = {
+        {"rotate17_shift", 17.0, {3.3, -1.7}},
+        {"rotate45", 45.0, {0.0, 0.0}},
+        {"rotate133_shift", 133.0, {-7.1, 2.2}},
+        {"rotate251", 251.0, {0.0, 0.0}},
+        {"shift_subcell", 0.0, {1.237, -0.611}},
+        {"resample_0.1", 0.0, {0.0, 0.0}, 0.10},
+        {"rotate290_resample_0.1", 290.0, {0.4, 0.9}, 0.10},
+        {"speckle_2pct", 0.0, {0.0, 0.0}, 0.0, 0.02},
+    };
+    return p;
+}
+
+COccupancyGridMap2D perturb(const COccupancyGridMap2D& g, const Perturbation& p)
+{
+    COccupancyGridMap2D out = g;
+    if (p.yaw_deg != 0.0 || p.shift.squaredNorm() > 0.0 || p.resolution_m > 0.0)
+        out = transformGrid(g, p.yaw_deg * M_PI / 180.0, p.shift, p.resolution_m);
+    if (p.noise > 0.0) out = addSpeckleNoise(out, p.noise, 42);
+    return out;
+}
+
+double histogramDistance(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b)
+{
+    std::size_t total = 0, l1 = 0;
+    for (std::size_t d = 0; d < std::max(a.size(), b.size()); ++d)
+    {
+        const std::size_t x = d < a.size() ? a[d] : 0, y = d < b.size() ? b[d] : 0;
+        total += x;
+        l1 += x > y ? x - y : y - x;
+    }
+    return total == 0 ? 0.0 : 0.5 * static_cast<double>(l1) / static_cast<double>(total);
+}
+
+void expectStable(const COccupancyGridMap2D& grid, const std::string& label)
+{
+    // TOPOEVAL_DUMP_DIR=/some/folder writes a picture of every graph compared, to see where two
+    // graphs differ.
+    const char* dump = std::getenv("TOPOEVAL_DUMP_DIR");
+    auto picture =
+        [&](const COccupancyGridMap2D& g, const TopologyGraph& tg, const std::string& name)
+    {
+        if (!dump) return;
+        std::string file = label + "_" + name + ".png";
+        std::replace(file.begin(), file.end(), '/', '_');
+        writePngAtomic(std::string(dump) + "/" + file, drawTopologyGraph(g, tg), true);
+    };
+    // TOPOEVAL_GRAPH_INI=file.ini runs the comparison with other [GraphBuilder] parameters.
+    GraphBuilderParameters params;
+    if (const char* ini = std::getenv("TOPOEVAL_GRAPH_INI"))
+        params = Parameters::fromIniFile(ini).graph;
+    const TopologyGraph ref = buildTopologyGraph(grid, params);
+    picture(grid, ref, "reference");
+    const double n_ref = static_cast<double>(ref.numNonSpuriousVertices());
+    ASSERT_GT(n_ref, 3.0) << label;
+    for (const Perturbation& p : perturbations())
+    {
+        const COccupancyGridMap2D moved = perturb(grid, p);
+        const TopologyGraph g = buildTopologyGraph(moved, params);
+        picture(moved, g, p.name);
+        const double n = static_cast<double>(g.numNonSpuriousVertices());
+        const double dh = histogramDistance(ref.degreeHistogram(), g.degreeHistogram());
+        EXPECT_LE(std::abs(n - n_ref) / n_ref, 0.10)
+            << label << " / " << p.name << ": " << n << " non-spurious vertices vs " << n_ref;
+        EXPECT_LE(dh, 0.10) << label << " / " << p.name << ": degree histogram distance " << dh;
+        ::testing::Test::RecordProperty(
+            label + "/" + p.name,
+            std::to_string(static_cast<int>(n)) + " vs " + std::to_string(static_cast<int>(n_ref)));
+    }
+}
+
+void expectStableRealMap(const std::string& relative)
+{
+    const auto file = sharedDataFile(relative);
+    if (!file) GTEST_SKIP() << "../shared/data not present";
+    expectStable(loadMap(*file).grid, relative);
+}
+}  // namespace
+
+TEST(GraphStability, HistogramDistanceIsTheShareOfVerticesThatChangeDegree)
+{
+    EXPECT_DOUBLE_EQ(histogramDistance({0, 5, 0, 5}, {0, 5, 0, 5}), 0.0);
+    EXPECT_DOUBLE_EQ(histogramDistance({0, 5, 0, 5}, {0, 4, 0, 6}), 0.1);
+    EXPECT_DOUBLE_EQ(histogramDistance({0, 10}, {0, 0, 0, 10}), 1.0);
+}
+
+TEST(GraphStability, SyntheticOffice) { expectStable(makeOfficeMap(), "office"); }
+
+TEST(GraphStability, SyntheticLargeBuilding)
+{
+    expectStable(makeLargeBuilding(700), "large_building_700");
+}
+
+TEST(GraphStability, RealHouseGroundTruth)
+{
+    expectStableRealMap("house/house_gt_trinary_res0.05.yaml");
+}
+TEST(GraphStability, RealHouseRobotMap) { expectStableRealMap("house/map_6ccdcaa.yaml"); }
+TEST(GraphStability, RealIntel) { expectStableRealMap("radish/intel-corrected_ref.yaml"); }
+TEST(GraphStability, RealFreiburg079)
+{
+    expectStableRealMap("radish/freiburg-079-corrected_ref.yaml");
+}
+TEST(GraphStability, RealAces) { expectStableRealMap("radish/aces-corrected_ref.yaml"); }

@@ -1,0 +1,314 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// Parameters: the paper's defaults, INI round trip, typo and bad-value detection, and the
+// shipped default INI never going stale.
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt_topoeval/Parameters.h>
+#include <mrpt_topoeval/errors.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "test_paths.h"
+
+namespace fs = std::filesystem;
+using mrpt_topoeval::InputError;
+using mrpt_topoeval::Parameters;
+
+namespace
+{
+/** A fresh temporary folder, removed with everything in it when the test is done. */
+struct ScopedTempDir
+{
+    explicit ScopedTempDir(const std::string& tag) : path(mrpt_topoeval::testing::makeTempDir(tag))
+    {
+    }
+    ~ScopedTempDir()
+    {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    ScopedTempDir(const ScopedTempDir&) = delete;
+    ScopedTempDir& operator=(const ScopedTempDir&) = delete;
+    const std::string path;
+};
+
+std::string writeText(const std::string& dir, const std::string& name, const std::string& text)
+{
+    const std::string path = (fs::path(dir) / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+std::string readText(const std::string& path)
+{
+    std::ifstream f(path, std::ios::binary);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+/** The InputError message fromIniFile() gives for `text`, or "" if it loads. */
+std::string iniError(const std::string& text)
+{
+    const ScopedTempDir dir_tmp("params");
+    const std::string& dir = dir_tmp.path;
+    const std::string path = writeText(dir, "bad.ini", text);
+    try
+    {
+        Parameters::fromIniFile(path);
+    }
+    catch (const InputError& e)
+    {
+        const std::string msg = e.what();
+        // Every message names the file first and fits on one line.
+        EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << msg;
+        EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+        return msg;
+    }
+    return "";
+}
+
+bool contains(const std::string& s, const std::string& part)
+{
+    return s.find(part) != std::string::npos;
+}
+}  // namespace
+
+TEST(Parameters, DefaultsAreThePapers)
+{
+    const Parameters p;
+    EXPECT_DOUBLE_EQ(p.graph.min_clearance_m, 0.30);  // paper Fig. 2: 30 cm
+    EXPECT_DOUBLE_EQ(p.graph.alpha_radius_m, 2.50);   // paper Fig. 3: alpha 2.5 m
+    EXPECT_DOUBLE_EQ(p.map_load.resolution_m, 0.05);
+    EXPECT_DOUBLE_EQ(p.map_load.occupied_thresh, 0.65);  // ROS map_server defaults
+    EXPECT_DOUBLE_EQ(p.map_load.free_thresh, 0.196);
+    EXPECT_NO_THROW(p.validate());
+}
+
+TEST(Parameters, DefaultIniTextLoadsBackToTheDefaults)
+{
+    const ScopedTempDir dir_tmp("params");
+    const std::string& dir = dir_tmp.path;
+    const std::string text = Parameters::defaultIniText();
+    const Parameters p = Parameters::fromIniFile(writeText(dir, "default.ini", text));
+    const Parameters d;
+    EXPECT_EQ(p.map_load.resolution_m, d.map_load.resolution_m);
+    EXPECT_EQ(p.map_load.max_cells, d.map_load.max_cells);
+    EXPECT_EQ(p.graph.min_clearance_m, d.graph.min_clearance_m);
+    EXPECT_EQ(p.graph.alpha_radius_m, d.graph.alpha_radius_m);
+    EXPECT_EQ(p.graph.skeleton_on_free_cells_only, d.graph.skeleton_on_free_cells_only);
+
+    // Both sections, and every key line documented with a unit and a meaning.
+    EXPECT_TRUE(contains(text, "[MapLoad]"));
+    EXPECT_TRUE(contains(text, "[GraphBuilder]"));
+    std::istringstream in(text);
+    std::string line;
+    int keys = 0;
+    while (std::getline(in, line))
+    {
+        if (line.empty() || line[0] == '#' || line[0] == '[') continue;
+        ++keys;
+        const auto comment = line.find("// [");
+        ASSERT_NE(comment, std::string::npos) << "no '// [unit] meaning' comment: " << line;
+        EXPECT_GT(line.size(), comment + 12) << "comment too short: " << line;
+    }
+    EXPECT_GE(keys, 13);
+}
+
+TEST(Parameters, ShippedIniEqualsDefaultIniText)
+{
+    const std::string shipped = mrpt_topoeval::testing::shareDir() + "/topoeval.ini";
+    ASSERT_TRUE(fs::exists(shipped)) << shipped;
+    EXPECT_EQ(readText(shipped), Parameters::defaultIniText())
+        << "share/mrpt_topoeval/topoeval.ini is stale: regenerate it with "
+           "`topoeval config --write share/mrpt_topoeval/topoeval.ini --force`";
+}
+
+TEST(Parameters, IniRoundTrip)
+{
+    Parameters p;
+    p.map_load.resolution_m = 0.1;
+    p.map_load.occupied_thresh = 0.7;
+    p.map_load.free_thresh = 0.25;
+    p.map_load.max_cells = 123456789;
+    p.graph.min_clearance_m = 0.45;
+    p.graph.alpha_radius_m = 3.25;
+    p.graph.join_distance_m = 0.8;
+    p.graph.skeleton_on_free_cells_only = false;
+
+    mrpt::config::CConfigFileMemory mem;
+    p.saveToConfigFile(mem);
+    const ScopedTempDir dir_tmp("params");
+    const std::string& dir = dir_tmp.path;
+    const Parameters q = Parameters::fromIniFile(writeText(dir, "rt.ini", mem.getContent()));
+    EXPECT_DOUBLE_EQ(q.map_load.resolution_m, 0.1);
+    EXPECT_DOUBLE_EQ(q.map_load.occupied_thresh, 0.7);
+    EXPECT_DOUBLE_EQ(q.map_load.free_thresh, 0.25);
+    EXPECT_EQ(q.map_load.max_cells, 123456789u);
+    EXPECT_DOUBLE_EQ(q.graph.min_clearance_m, 0.45);
+    EXPECT_DOUBLE_EQ(q.graph.alpha_radius_m, 3.25);
+    EXPECT_DOUBLE_EQ(q.graph.join_distance_m, 0.8);
+    EXPECT_FALSE(q.graph.skeleton_on_free_cells_only);
+}
+
+TEST(Parameters, MissingKeysKeepDefaultsAndCommentsAreIgnored)
+{
+    const ScopedTempDir dir_tmp("params");
+    const std::string& dir = dir_tmp.path;
+    const std::string path = writeText(dir, "partial.ini",
+                                       "# a comment\n"
+                                       "; another\n"
+                                       "// and another\n"
+                                       "\n"
+                                       "[GraphBuilder]\r\n"  // Windows line ends are fine
+                                       "  min_clearance_m = 0.4   // wider robot\n"
+                                       "skeleton_on_free_cells_only = no\n");
+    const Parameters p = Parameters::fromIniFile(path);
+    EXPECT_DOUBLE_EQ(p.graph.min_clearance_m, 0.4);
+    EXPECT_FALSE(p.graph.skeleton_on_free_cells_only);
+    EXPECT_DOUBLE_EQ(p.graph.alpha_radius_m, 2.5);
+    EXPECT_DOUBLE_EQ(p.map_load.resolution_m, 0.05);
+}
+
+TEST(Parameters, SectionAndKeyNamesIgnoreCaseLikeMrpt)
+{
+    const ScopedTempDir dir_tmp("params");
+    const std::string& dir = dir_tmp.path;
+    const Parameters p = Parameters::fromIniFile(
+        writeText(dir, "case.ini", "[graphbuilder]\nMIN_CLEARANCE_M = 0.35\n"));
+    EXPECT_DOUBLE_EQ(p.graph.min_clearance_m, 0.35);
+}
+
+TEST(Parameters, UnknownKeyIsAnErrorWithASuggestion)
+{
+    const std::string msg = iniError("[GraphBuilder]\nmin_clearence_m = 0.3\n");
+    EXPECT_TRUE(contains(msg, ": [GraphBuilder] unknown key 'min_clearence_m'")) << msg;
+    EXPECT_TRUE(contains(msg, "line 2")) << msg;
+    EXPECT_TRUE(contains(msg, "did you mean 'min_clearance_m'")) << msg;
+}
+
+TEST(Parameters, UnknownSectionIsAnError)
+{
+    const std::string msg = iniError("[GraphBulider]\nmin_clearance_m = 0.3\n");
+    EXPECT_TRUE(contains(msg, "unknown section [GraphBulider]")) << msg;
+    EXPECT_TRUE(contains(msg, "did you mean 'GraphBuilder'")) << msg;
+}
+
+TEST(Parameters, StructuralMistakesAreErrors)
+{
+    EXPECT_TRUE(contains(iniError("min_clearance_m = 0.3\n"), "outside any section"));
+    EXPECT_TRUE(contains(iniError("[GraphBuilder]\nmin_clearance_m 0.3\n"),
+                         "expected '[Section]' or 'key = value'"));
+    EXPECT_TRUE(contains(iniError("[GraphBuilder\n"), "malformed section header"));
+    const std::string dup = iniError(
+        "[GraphBuilder]\nmin_clearance_m = 0.3\n[MapLoad]\n[GraphBuilder]\n"
+        "min_clearance_m = 0.5\n");
+    EXPECT_TRUE(contains(dup, "key 'min_clearance_m' given twice (lines 2 and 5)")) << dup;
+}
+
+TEST(Parameters, OutOfRangeValuesNameSectionKeyAndValue)
+{
+    std::string msg = iniError("[GraphBuilder]\nmin_clearance_m = -1\n");
+    EXPECT_TRUE(contains(msg, "[GraphBuilder] min_clearance_m = -1 violates min_clearance_m > 0"))
+        << msg;
+    msg = iniError("[MapLoad]\nresolution_m = -1\n");
+    EXPECT_TRUE(contains(msg, "[MapLoad] resolution_m = -1 violates resolution_m > 0")) << msg;
+    msg = iniError("[MapLoad]\nfree_thresh = 0.8\n");
+    EXPECT_TRUE(contains(msg, "free_thresh = 0.8 violates free_thresh < occupied_thresh")) << msg;
+    msg = iniError("[MapLoad]\nmax_cells = 0\n");
+    EXPECT_TRUE(contains(msg, "max_cells = 0 violates max_cells > 0")) << msg;
+    msg = iniError("[MapLoad]\nmax_cells = -5\n");
+    EXPECT_TRUE(contains(msg, "max_cells = -5 violates max_cells > 0")) << msg;
+}
+
+TEST(Parameters, MalformedValuesNameKeyAndValue)
+{
+    // MRPT's own reader would take "0.3x" as 0.3, "" as 0 and "maybe" as false.
+    std::string msg = iniError("[GraphBuilder]\nmin_clearance_m = 0.3x\n");
+    EXPECT_TRUE(contains(msg, "[GraphBuilder] min_clearance_m = '0.3x' is not a finite number"))
+        << msg;
+    msg = iniError("[GraphBuilder]\nalpha_radius_m =\n");
+    EXPECT_TRUE(contains(msg, "alpha_radius_m = '' is not a finite number")) << msg;
+    msg = iniError("[GraphBuilder]\nalpha_radius_m = nan\n");
+    EXPECT_TRUE(contains(msg, "alpha_radius_m = 'nan' is not a finite number")) << msg;
+    msg = iniError("[GraphBuilder]\nskeleton_on_free_cells_only = maybe\n");
+    EXPECT_TRUE(contains(msg, "skeleton_on_free_cells_only = 'maybe' is not true or false")) << msg;
+    msg = iniError("[MapLoad]\nresolution_m = 0.05 # metres\n");
+    EXPECT_TRUE(contains(msg, "resolution_m = '0.05 # metres' is not a finite number")) << msg;
+    msg = iniError("[MapLoad]\nmax_cells = 1e6\n");
+    EXPECT_TRUE(contains(msg, "max_cells = '1e6' is not a whole number")) << msg;
+}
+
+TEST(Parameters, NonTextFilesAreRejected)
+{
+    const std::string msg = iniError(std::string("[MapLoad]\0\x01\x02", 12));
+    EXPECT_TRUE(contains(msg, "not a text file")) << msg;
+}
+
+TEST(Parameters, MissingFileOrFolderNamesThePath)
+{
+    const ScopedTempDir dir_tmp("params");
+    const std::string& dir = dir_tmp.path;
+    const std::string missing = dir + "/nope.ini";
+    try
+    {
+        Parameters::fromIniFile(missing);
+        FAIL() << "no error for a missing file";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_EQ(std::string(e.what()), missing + ": no such file");
+    }
+    try
+    {
+        Parameters::fromIniFile(dir);
+        FAIL() << "no error for a folder";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_EQ(std::string(e.what()), dir + ": is a folder, not an INI file");
+    }
+}
+
+TEST(Parameters, ReadingNeverModifiesTheFile)
+{
+    const ScopedTempDir dir_tmp("params");
+    const std::string& dir = dir_tmp.path;
+    const std::string text = "[GraphBuilder]\nmin_clearance_m=0.4\n";
+    const std::string path = writeText(dir, "keep.ini", text);
+    const auto before = fs::last_write_time(path);
+    Parameters::fromIniFile(path);
+    EXPECT_EQ(readText(path), text);
+    EXPECT_EQ(fs::last_write_time(path), before);
+}
+
+TEST(Parameters, ValidateMessages)
+{
+    Parameters p;
+    p.map_load.resolution_m = -1;
+    try
+    {
+        p.validate();
+        FAIL() << "no error";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_EQ(std::string(e.what()), "[MapLoad] resolution_m = -1 violates resolution_m > 0");
+    }
+    p = Parameters();
+    p.graph.min_clearance_m = 0.0;
+    try
+    {
+        p.validate();
+        FAIL() << "no error";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_EQ(std::string(e.what()),
+                  "[GraphBuilder] min_clearance_m = 0 violates min_clearance_m > 0");
+    }
+}
