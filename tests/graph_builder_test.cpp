@@ -206,13 +206,19 @@ TEST(GraphBuilder, LoopWithSpurHasALoopEdge)
     EXPECT_TRUE(g.warnings.empty());
 }
 
-TEST(GraphBuilder, ShortDeadEndIsSpurious)
+TEST(GraphBuilder, ShortDeadEndIsSpuriousOrInsideTheJunctionDisc)
 {
-    // A T whose branch is only 1 m deep: its dead-end edge (~0.8 m) is kept by pruning
-    // (> 0.5 m) but marked spurious (< 1 m), with its end vertex (paper II-C).
+    // A T whose branch is only 1 m deep. Its dead-end edge (~0.8 m) ends inside the junction's
+    // empty disc (clearance ~1 m): by default it is removed and the corridor is one edge.
     GridSketch s(14.0, 9.0);
     s.carve(1.0, 6.0, 13.0, 7.5).carve(6.25, 5.0, 7.75, 6.0);
-    const TopologyGraph g = buildTopologyGraph(s.grid());
+    EXPECT_EQ(buildTopologyGraph(s.grid()).vertices.size(), 2u);
+
+    // Without the disc rule it is kept by pruning (> 0.5 m) but marked spurious (< 1 m), with
+    // its end vertex (paper II-C).
+    GraphBuilderParameters p;
+    p.junction_disc_ratio = 0.0;
+    const TopologyGraph g = buildTopologyGraph(s.grid(), p);
     expectWellFormed(g);
     ASSERT_EQ(g.vertices.size(), 4u);
     int spurious_edges = 0;
@@ -226,10 +232,9 @@ TEST(GraphBuilder, ShortDeadEndIsSpurious)
     EXPECT_EQ(spurious_edges, 1);
     EXPECT_EQ(g.numNonSpuriousVertices(), 3u);
 
-    GraphBuilderParameters p;
     p.spurious_dead_end_length_m = 0.5;
     EXPECT_EQ(buildTopologyGraph(s.grid(), p).numNonSpuriousVertices(), 4u);
-    p.prune_dead_end_length_m = 1.2;  // now pruned away: a straight corridor of two dead ends
+    p.prune_dead_end_length_m = 1.2;  // now pruned away by length
     EXPECT_EQ(buildTopologyGraph(s.grid(), p).vertices.size(), 2u);
 }
 

@@ -157,8 +157,8 @@ COccupancyGridMap2D transformGrid(const COccupancyGridMap2D& src, double yaw,
             bool any_occ = false;
             double sum_p = 0.0;
             int n = 0;
-            for (int i = 0; i < k && !any_occ; ++i)
-                for (int j = 0; j < k && !any_occ; ++j)
+            for (int i = 0; i < k; ++i)
+                for (int j = 0; j < k; ++j)
                 {
                     const Eigen::Vector2d q(dst.idx2x(cx) + res * ((i + 0.5) / k - 0.5),
                                             dst.idx2y(cy) + res * ((j + 0.5) / k - 0.5));
@@ -172,7 +172,7 @@ COccupancyGridMap2D transformGrid(const COccupancyGridMap2D& src, double yaw,
                         continue;
                     }
                     const auto l = src.getRow(sy)[sx];
-                    any_occ = l <= occ_l;
+                    any_occ = any_occ || l <= occ_l;
                     sum_p += COccupancyGridMap2D::l2p(l);
                 }
             if (any_occ)

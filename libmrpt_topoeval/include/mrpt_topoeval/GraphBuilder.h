@@ -19,6 +19,10 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
     double occupied_min_prob = 0.65;
     /** A cell is free space when P(occupied) <= this [probability]. */
     double free_max_prob = 0.35;
+    /** Unknown specks inside free space narrower than about twice this are filled as free
+     * (a morphological closing of the free cells; walls are never changed): the dotted free
+     * space of laser fans looks the same at every resolution. 0 disables [m]. */
+    double unknown_fill_radius_m = 0.10;
     /** Unknown cells next to free space bound it like obstacles: the graph is the skeleton of
      * the known free space, so half-seen areas (laser fans through doors, frontiers) do not
      * grow branches that change with every pass of the robot [bool]. */
@@ -41,6 +45,9 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
      * and flips in and out with small changes of the walls (a room's end next to its door).
      * It is removed. 0 disables [ratio]. */
     double junction_disc_ratio = 1.0;
+    /** ... but only dead ends shorter than this (straight distance) are judged by the disc
+     * rule: a long branch of a big room is a real feature even inside the room's disc [m]. */
+    double junction_disc_max_length_m = 1.50;
     /** Remaining dead-end edges shorter than this, and their end vertex, are marked spurious
      * (paper II-C) [m]. */
     double spurious_dead_end_length_m = 1.00;

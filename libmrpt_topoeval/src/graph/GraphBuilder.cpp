@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <unordered_map>
 
@@ -21,12 +22,14 @@ void GraphBuilderParameters::loadFromConfigFile(const mrpt::config::CConfigFileB
 {
     MRPT_LOAD_CONFIG_VAR(occupied_min_prob, double, c, s);
     MRPT_LOAD_CONFIG_VAR(free_max_prob, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(unknown_fill_radius_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(unknown_is_obstacle, bool, c, s);
     MRPT_LOAD_CONFIG_VAR(skeleton_on_free_cells_only, bool, c, s);
     MRPT_LOAD_CONFIG_VAR(min_clearance_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(prune_dead_end_length_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(corner_spur_ratio, double, c, s);
     MRPT_LOAD_CONFIG_VAR(junction_disc_ratio, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(junction_disc_max_length_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(spurious_dead_end_length_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(alpha_radius_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(join_distance_m, double, c, s);
@@ -39,6 +42,8 @@ void GraphBuilderParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         occupied_min_prob, "[probability] a cell is an obstacle (Voronoi site) if P(occ) >= this");
     MRPT_SAVE_CONFIG_VAR_COMMENT(free_max_prob, "[probability] a cell is free if P(occ) <= this");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(unknown_fill_radius_m,
+                                 "[m] fill unknown specks in free space up to ~2x this; 0 = off");
     MRPT_SAVE_CONFIG_VAR_COMMENT(unknown_is_obstacle,
                                  "[bool] unknown cells next to free space bound it like walls");
     MRPT_SAVE_CONFIG_VAR_COMMENT(skeleton_on_free_cells_only,
@@ -53,6 +58,8 @@ void GraphBuilderParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         junction_disc_ratio,
         "[ratio] remove dead ends ending within this x their junction's clearance of it");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(junction_disc_max_length_m,
+                                 "[m] ... only for dead ends shorter than this (straight)");
     MRPT_SAVE_CONFIG_VAR_COMMENT(spurious_dead_end_length_m,
                                  "[m] mark remaining dead ends shorter than this as spurious");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
@@ -83,6 +90,8 @@ void GraphBuilderParameters::validate() const
             "occupied_min_prob", occupied_min_prob, "0.5 < occupied_min_prob <= 1");
     require(finite(free_max_prob) && free_max_prob >= 0.0 && free_max_prob < 0.5, "free_max_prob",
             free_max_prob, "0 <= free_max_prob < 0.5");
+    require(finite(unknown_fill_radius_m) && unknown_fill_radius_m >= 0.0, "unknown_fill_radius_m",
+            unknown_fill_radius_m, "unknown_fill_radius_m >= 0");
     require(finite(min_clearance_m) && min_clearance_m > 0.0, "min_clearance_m", min_clearance_m,
             "min_clearance_m > 0");
     require(finite(prune_dead_end_length_m) && prune_dead_end_length_m >= 0.0,
@@ -91,6 +100,9 @@ void GraphBuilderParameters::validate() const
             corner_spur_ratio, "corner_spur_ratio >= 0");
     require(finite(junction_disc_ratio) && junction_disc_ratio >= 0.0, "junction_disc_ratio",
             junction_disc_ratio, "junction_disc_ratio >= 0");
+    require(finite(junction_disc_max_length_m) && junction_disc_max_length_m >= 0.0,
+            "junction_disc_max_length_m", junction_disc_max_length_m,
+            "junction_disc_max_length_m >= 0");
     require(finite(spurious_dead_end_length_m) && spurious_dead_end_length_m >= 0.0,
             "spurious_dead_end_length_m", spurious_dead_end_length_m,
             "spurious_dead_end_length_m >= 0");
@@ -135,6 +147,20 @@ enum CellClass : std::uint8_t
     kFree = 1,
     kOccupied = 2
 };
+// Closing of the free cells with a disc: unknown cells enclosed by free space within the radius
+// become free, occupied cells never change.
+void fillUnknownSpecks(std::vector<std::uint8_t>& cls, int sx, int sy, double radius_cells)
+{
+    const int r = static_cast<int>(std::lround(radius_cells));
+    if (r < 1 || cls.empty()) return;
+    cv::Mat c(sy, sx, CV_8UC1, cls.data());
+    cv::Mat free_mask = (c == kFree), closed;
+    const cv::Mat disc =
+        cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1));
+    cv::morphologyEx(free_mask, closed, cv::MORPH_CLOSE, disc, cv::Point(-1, -1), 1,
+                     cv::BORDER_CONSTANT, cv::Scalar(0));
+    c.setTo(kFree, closed & (c == kUnknown));
+}
 }  // namespace
 
 TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
@@ -175,6 +201,7 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
                 out[cx] = kFree;
         }
     }
+    fillUnknownSpecks(cls, sx, sy, params.unknown_fill_radius_m / res);
     for (auto c : cls)
     {
         graph.map.occupied_cells += c == kOccupied;
@@ -250,7 +277,7 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
     timer.lap("chains");
 
     g.pruneDeadEnds(params.prune_dead_end_length_m / res, params.corner_spur_ratio,
-                    params.junction_disc_ratio);
+                    params.junction_disc_ratio, params.junction_disc_max_length_m / res);
     stats.vertices_after_prune = g.numAliveVertices();
     timer.lap("prune");
 
@@ -268,7 +295,7 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
             g.dissolveDegreeTwo();
             // The cut leaves stubs where corridors crossed the boundary: prune them as above.
             g.pruneDeadEnds(params.prune_dead_end_length_m / res, params.corner_spur_ratio,
-                            params.junction_disc_ratio);
+                            params.junction_disc_ratio, params.junction_disc_max_length_m / res);
             const internal::CellToWorld to_world{grid.idx2x(0), grid.idx2y(0), res};
             for (const auto& p : outer) graph.outer_boundary_m.push_back(to_world(p));
         }

@@ -230,7 +230,8 @@ void GraphEditor::dissolveDegreeTwo()
     m_e = std::move(new_edges);
 }
 
-std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio, double disc_ratio)
+std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio, double disc_ratio,
+                                       double disc_max_chord)
 {
     std::size_t removed = 0;
     for (;;)
@@ -248,7 +249,7 @@ std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio, d
             const double drop = m_v[junction].clearance - m_v[end].clearance;
             const double chord = (m_v[junction].pos - m_v[end].pos).norm();
             if (E.length < max_length || chord < corner_ratio * drop ||
-                chord < disc_ratio * m_v[junction].clearance)
+                (chord < disc_max_chord && chord < disc_ratio * m_v[junction].clearance))
                 victims.push_back(e);
         }
         if (victims.empty()) break;

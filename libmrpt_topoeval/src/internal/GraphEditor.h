@@ -48,9 +48,11 @@ public:
 
     /** Removes dead-end edges, with their dead-end vertex, that are shorter than `max_length`,
      * or whose chord is shorter than `corner_ratio` times the clearance they lose from junction
-     * to end, or than `disc_ratio` times the junction's clearance; dissolves degree-2 vertices
-     * after each round, until none is left. Returns edges removed. */
-    std::size_t pruneDeadEnds(double max_length, double corner_ratio, double disc_ratio);
+     * to end, or (when shorter than `disc_max_chord`) than `disc_ratio` times the junction's
+     * clearance; dissolves degree-2 vertices after each round, until none is left. Returns
+     * edges removed. */
+    std::size_t pruneDeadEnds(double max_length, double corner_ratio, double disc_ratio,
+                              double disc_max_chord);
 
     /** Cuts the graph to a region (paper II-B, the alpha-shape cut): vertices outside go with
      * their edges, except that an edge from an inside vertex to an outside one is cut where
