@@ -22,6 +22,8 @@ namespace
 {
 const char* const kMapLoadSection = "MapLoad";
 const char* const kGraphBuilderSection = "GraphBuilder";
+const char* const kSimilaritySection = "VertexSimilarity";
+const char* const kMatcherSection = "GraphMatcher";
 
 // A configuration file is a few kilobytes; anything much larger is the wrong file.
 constexpr std::uintmax_t kMaxIniBytes = 1 << 20;
@@ -41,6 +43,10 @@ const std::map<std::string, std::string> kSectionComments = {
      "# How map files are read (the command line's --resolution overrides resolution_m)."},
     {kGraphBuilderSection,
      "# Building the Topology Graph from the grid (paper section II-B and II-C)."},
+    {kSimilaritySection,
+     "# Similarity of two vertices, from attributes or by ICP (paper section III-A)."},
+    {kMatcherSection,
+     "# Matching two graphs: isomorphism by wavefront, neighbour growing (paper III-B)."},
 };
 
 std::string trim(const std::string& s)
@@ -325,6 +331,8 @@ void Parameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, cons
     map_load.max_cells = readCountStrict(c, ml, "max_cells", map_load.max_cells);
 
     graph.loadFromConfigFile(c, s + kGraphBuilderSection);
+    similarity.loadFromConfigFile(c, s + kSimilaritySection);
+    matcher.loadFromConfigFile(c, s + kMatcherSection);
 }
 
 void Parameters::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -344,6 +352,8 @@ void Parameters::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::s
             "[cells] largest map accepted (width x height), checked before decoding");
 
     graph.saveToConfigFile(c, s + kGraphBuilderSection);
+    similarity.saveToConfigFile(c, s + kSimilaritySection);
+    matcher.saveToConfigFile(c, s + kMatcherSection);
 }
 
 void Parameters::validate() const
@@ -366,14 +376,19 @@ void Parameters::validate() const
                          ")");
     if (m.max_cells == 0) throw InputError(sec + "max_cells = 0 violates max_cells > 0");
 
-    try
-    {
-        graph.validate();
-    }
-    catch (const InputError& e)
-    {
-        throw InputError(inSection(kGraphBuilderSection, e.what()));
-    }
+    auto validateSection = [](const char* section, auto& part) {
+        try
+        {
+            part.validate();
+        }
+        catch (const InputError& e)
+        {
+            throw InputError(inSection(section, e.what()));
+        }
+    };
+    validateSection(kGraphBuilderSection, graph);
+    validateSection(kSimilaritySection, similarity);
+    validateSection(kMatcherSection, matcher);
 }
 
 Parameters Parameters::fromIniFile(const std::string& path)

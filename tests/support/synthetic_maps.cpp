@@ -183,6 +183,60 @@ COccupancyGridMap2D transformGrid(const COccupancyGridMap2D& src, double yaw,
     return dst;
 }
 
+Eigen::Vector2d breakPoint(const Eigen::Vector2d& pivot, double yaw,
+                           const std::function<bool(double, double)>& in_part,
+                           const Eigen::Vector2d& p)
+{
+    if (!in_part(p.x(), p.y())) return p;
+    return pivot + Eigen::Rotation2Dd(yaw) * (p - pivot);
+}
+
+COccupancyGridMap2D breakMap(const COccupancyGridMap2D& src, const Eigen::Vector2d& pivot,
+                             double yaw, const std::function<bool(double, double)>& in_part)
+{
+    // The moved part may leave the source's extent: grow the grid to hold it.
+    double x0 = src.getXMin(), y0 = src.getYMin(), x1 = src.getXMax(), y1 = src.getYMax();
+    for (double x : {src.getXMin(), src.getXMax()})
+        for (double y : {src.getYMin(), src.getYMax()})
+        {
+            const Eigen::Vector2d q =
+                pivot + Eigen::Rotation2Dd(yaw) * (Eigen::Vector2d(x, y) - pivot);
+            x0 = std::min(x0, q.x()), x1 = std::max(x1, q.x());
+            y0 = std::min(y0, q.y()), y1 = std::max(y1, q.y());
+        }
+    COccupancyGridMap2D dst;
+    dst.setSize(x0, x1, y0, y1, src.getResolution(), 0.5f);
+    const Eigen::Rotation2Dd Rinv(-yaw);
+    const auto occ_l = COccupancyGridMap2D::p2l(0.35f);
+    auto sample = [&](const Eigen::Vector2d& p, COccupancyGridMap2D::cellType* out)
+    {
+        const int sx = src.x2idx(p.x()), sy = src.y2idx(p.y());
+        if (sx < 0 || sy < 0 || sx >= static_cast<int>(src.getSizeX()) ||
+            sy >= static_cast<int>(src.getSizeY()))
+            return false;
+        *out = src.getRow(sy)[sx];
+        return true;
+    };
+    for (unsigned cy = 0; cy < dst.getSizeY(); ++cy)
+        for (unsigned cx = 0; cx < dst.getSizeX(); ++cx)
+        {
+            const Eigen::Vector2d q(dst.idx2x(cx), dst.idx2y(cy));
+            const Eigen::Vector2d back = pivot + Rinv * (q - pivot);
+            COccupancyGridMap2D::cellType moved = 0, still = 0;
+            const bool has_moved = in_part(back.x(), back.y()) && sample(back, &moved);
+            const bool has_still = !in_part(q.x(), q.y()) && sample(q, &still);
+            auto& cell = dst.getRow(cy)[cx];
+            if (has_moved && has_still)
+                cell = (moved <= occ_l || still <= occ_l) ? std::min(moved, still)
+                                                          : std::max(moved, still);
+            else if (has_moved)
+                cell = moved;
+            else if (has_still)
+                cell = still;
+        }
+    return dst;
+}
+
 COccupancyGridMap2D addSpeckleNoise(const COccupancyGridMap2D& src, double fraction,
                                     std::uint32_t seed)
 {

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 
 namespace mrpt_topoeval::testing
 {
@@ -67,6 +68,18 @@ mrpt::maps::COccupancyGridMap2D transformGrid(const mrpt::maps::COccupancyGridMa
 /** Where transformGrid() puts a world point of `src` (for checking positions). */
 Eigen::Vector2d transformPoint(const mrpt::maps::COccupancyGridMap2D& src, double yaw_rad,
                                const Eigen::Vector2d& shift_m, const Eigen::Vector2d& p);
+
+/** A map broken once (paper IV, brokenness): the part of `src` where `in_part(x, y)` holds
+ * (world coordinates of the source) is rotated by `yaw_rad` about `pivot`, the rest stays.
+ * Where the moved part overlaps the rest, obstacles win; cells covered by neither are unknown. */
+mrpt::maps::COccupancyGridMap2D breakMap(const mrpt::maps::COccupancyGridMap2D& src,
+                                         const Eigen::Vector2d& pivot, double yaw_rad,
+                                         const std::function<bool(double x, double y)>& in_part);
+
+/** Where breakMap() puts a world point of `src`. */
+Eigen::Vector2d breakPoint(const Eigen::Vector2d& pivot, double yaw_rad,
+                           const std::function<bool(double x, double y)>& in_part,
+                           const Eigen::Vector2d& p);
 
 /** Flips a fraction of the free cells that touch an obstacle to occupied, and the same
  * fraction of those obstacle cells to free: light, seeded speckle on the walls. */

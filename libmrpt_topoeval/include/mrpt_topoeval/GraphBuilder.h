@@ -6,6 +6,7 @@
 #include <mrpt_topoeval/TopologyGraph.h>
 
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -85,6 +86,12 @@ struct GraphBuildStats
     std::map<std::string, double> timing_ms;
 };
 
+/** Called after each construction step with the graph as it stands then (attributes computed,
+ * numbering canonical), to draw or inspect the steps. Step names, in order: "voronoi" (the
+ * clearance-filtered Voronoi diagram with degree-2 chains merged), "pruned", "alpha_cut",
+ * "largest_component", "joined" (the final graph). */
+using GraphBuildObserver = std::function<void(const std::string& step, const TopologyGraph&)>;
+
 /** Builds the Topology Graph of a grid map (paper II-B and II-C): Voronoi diagram of the
  * obstacle cells, clearance filter, degree-2 chains merged into edges, short dead ends pruned,
  * cut to the outer alpha shape, largest connected part, close vertices joined, attributes.
@@ -96,6 +103,7 @@ struct GraphBuildStats
  * \throws InputError if `params.validate()` fails. */
 TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
                                  const GraphBuilderParameters& params = {},
-                                 GraphBuildStats* stats = nullptr);
+                                 GraphBuildStats* stats = nullptr,
+                                 const GraphBuildObserver& observer = {});
 
 }  // namespace mrpt_topoeval

@@ -3,6 +3,8 @@
 
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt_topoeval/GraphBuilder.h>
+#include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/map_io.h>
 
 #include <string>
@@ -12,13 +14,15 @@ namespace mrpt_topoeval
 /** Every stage's parameters; one INI section per stage. Missing keys keep their defaults. */
 struct Parameters : public mrpt::config::CLoadableOptions
 {
-    MapLoadOptions map_load;       //!< `[MapLoad]` (command line options override it)
-    GraphBuilderParameters graph;  //!< `[GraphBuilder]`
+    MapLoadOptions map_load;                //!< `[MapLoad]` (command line options override it)
+    GraphBuilderParameters graph;           //!< `[GraphBuilder]`
+    VertexSimilarityParameters similarity;  //!< `[VertexSimilarity]`
+    GraphMatcherParameters matcher;         //!< `[GraphMatcher]`
 
-    void loadFromConfigFile(
-        const mrpt::config::CConfigFileBase& c, const std::string& s = {}) override;
-    void saveToConfigFile(
-        mrpt::config::CConfigFileBase& c, const std::string& s = {}) const override;
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                            const std::string& s = {}) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                          const std::string& s = {}) const override;
     /** \throws InputError naming the section, field and value. */
     void validate() const;
 

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -21,10 +20,10 @@ struct Incidence
 /** A junction (degree > 2) or dead end (degree 1) of the Topology Graph. */
 struct TopoVertex
 {
-    int id = -1;                                //!< Equals the index in TopologyGraph::vertices.
-    Eigen::Vector2d position_m{0.0, 0.0};       //!< World frame of the map [m].
-    double clearance_m = 0.0;                   //!< Distance to the nearest obstacle [m].
-    bool spurious = false;                      //!< End of a short dead end (paper II-C).
+    int id = -1;                           //!< Equals the index in TopologyGraph::vertices.
+    Eigen::Vector2d position_m{0.0, 0.0};  //!< World frame of the map [m].
+    double clearance_m = 0.0;              //!< Distance to the nearest obstacle [m].
+    bool spurious = false;                 //!< End of a short dead end (paper II-C).
     /** Incident edges ordered counter-clockwise by angle; a loop edge appears twice. */
     std::vector<Incidence> ring;
     /** Angle from each ring entry to the next, counter-clockwise, summing to 2 pi: the
@@ -46,11 +45,11 @@ struct TopoEdge
     std::vector<Eigen::Vector2d> path_m;
     /** Obstacle distance at each path point [m]. */
     std::vector<double> clearance_m;
-    double length_m = 0.0;            //!< Length of the path [m].
-    double min_clearance_m = 0.0;     //!< Smallest clearance along the path [m].
-    double mean_clearance_m = 0.0;    //!< Length-weighted mean clearance along the path [m].
-    bool dead_end = false;            //!< One end has degree 1.
-    bool spurious = false;            //!< Dead end shorter than the spurious length.
+    double length_m = 0.0;          //!< Length of the path [m].
+    double min_clearance_m = 0.0;   //!< Smallest clearance along the path [m].
+    double mean_clearance_m = 0.0;  //!< Length-weighted mean clearance along the path [m].
+    bool dead_end = false;          //!< One end has degree 1.
+    bool spurious = false;          //!< Dead end shorter than the spurious length.
 };
 
 /** Facts about the grid a graph was built from, for reports and drawing. */

@@ -164,7 +164,8 @@ void fillUnknownSpecks(std::vector<std::uint8_t>& cls, int sx, int sy, double ra
 }  // namespace
 
 TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
-                                 const GraphBuilderParameters& params, GraphBuildStats* stats_out)
+                                 const GraphBuilderParameters& params, GraphBuildStats* stats_out,
+                                 const GraphBuildObserver& observer)
 {
     params.validate();
     GraphBuildStats stats;
@@ -275,11 +276,25 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
     g.dissolveDegreeTwo();
     stats.vertices_initial = g.numAliveVertices();
     timer.lap("chains");
+    const internal::CellToWorld to_world{grid.idx2x(0), grid.idx2y(0), res};
+    // Snapshots for the observer cost an attribute pass each; none without an observer.
+    auto snapshot = [&](const char* step)
+    {
+        if (!observer) return;
+        TopologyGraph snap;
+        snap.map = graph.map;
+        snap.outer_boundary_m = graph.outer_boundary_m;
+        internal::attributeGraph(g, to_world, params, snap);
+        observer(step, snap);
+        timer.lap("observer");
+    };
+    snapshot("voronoi");
 
     g.pruneDeadEnds(params.prune_dead_end_length_m / res, params.corner_spur_ratio,
                     params.junction_disc_ratio, params.junction_disc_max_length_m / res);
     stats.vertices_after_prune = g.numAliveVertices();
     timer.lap("prune");
+    snapshot("pruned");
 
     // Paper II-B: cut everything outside the longest polygon of the map's alpha shape.
     if (params.alpha_radius_m > 0.0)
@@ -296,24 +311,25 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
             // The cut leaves stubs where corridors crossed the boundary: prune them as above.
             g.pruneDeadEnds(params.prune_dead_end_length_m / res, params.corner_spur_ratio,
                             params.junction_disc_ratio, params.junction_disc_max_length_m / res);
-            const internal::CellToWorld to_world{grid.idx2x(0), grid.idx2y(0), res};
             for (const auto& p : outer) graph.outer_boundary_m.push_back(to_world(p));
         }
     }
     stats.vertices_after_alpha = g.numAliveVertices();
     timer.lap("alpha_cut");
+    snapshot("alpha_cut");
 
     g.keepLargestComponent();
     stats.vertices_after_component = g.numAliveVertices();
     timer.lap("largest_component");
+    snapshot("largest_component");
 
     g.joinClose(params.join_distance_m / res);
     timer.lap("join");
 
-    const internal::CellToWorld to_world{grid.idx2x(0), grid.idx2y(0), res};
     internal::attributeGraph(g, to_world, params, graph);
     stats.vertices_final = graph.vertices.size();
     timer.lap("attributes");
+    if (observer) observer("joined", graph);
 
     if (graph.vertices.empty())
         graph.warnings.push_back(

@@ -1,0 +1,50 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+// The two stages of the matcher (paper III-B), on the matching views of both graphs.
+
+#include <mrpt_topoeval/GraphMatcher.h>
+
+#include <vector>
+
+#include "internal/MatchView.h"
+
+namespace mrpt_topoeval::internal
+{
+/** What both stages read, and the vertices already assigned. */
+struct MatchContext
+{
+    const MatchView& gt;
+    const MatchView& map;
+    const SimilarityMatrix& similarity;
+    const GraphMatcherParameters& params;
+    std::vector<int> gt_to_map;  //!< Assigned map vertex per gt vertex, -1 if none.
+    std::vector<int> map_to_gt;  //!< Assigned gt vertex per map vertex, -1 if none.
+};
+
+/** One accepted isomorphism: its pairs in the order the wavefront found them. */
+struct Isomorphism
+{
+    std::vector<std::pair<int, int>> pairs;  //!< (gt vertex, map vertex)
+    double similarity_sum = 0.0;
+};
+
+/** Paper III-B, Algorithm 1: from every unassigned gt vertex (most similar first), tries every
+ * map vertex of the same degree as a seed, grows each by wavefront propagation, and accepts the
+ * biggest isomorphism for that vertex if it has at least min_isomorphism_vertices. Accepted
+ * pairs are written into ctx. */
+std::vector<Isomorphism> findIsomorphisms(MatchContext& ctx);
+
+/** Paper III-B, end: extends the assignment from its border, pairing unassigned neighbours of
+ * assigned pairs by similarity with relaxed constraints. Returns the new pairs (gt, map, the
+ * isomorphism index they grew from) in the order they were accepted. */
+struct GrownPair
+{
+    int gt = -1, map = -1, isomorphism = -1;
+};
+std::vector<GrownPair> growNeighbours(MatchContext& ctx, std::vector<int>& iso_of_gt);
+
+/** Smallest absolute difference of two angles [rad]. */
+double angleDistance(double a, double b);
+
+}  // namespace mrpt_topoeval::internal

@@ -1,0 +1,99 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// Paper III-B: matching two Topology Graphs, isomorphisms first, then neighbour growing.
+
+#include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/errors.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "internal/matching.h"
+
+namespace mrpt_topoeval
+{
+GraphMatch matchGraphs(const TopologyGraph& ground_truth, const TopologyGraph& map,
+                       const SimilarityMatrix& similarity, const GraphMatcherParameters& params)
+{
+    params.validate();
+    const auto t0 = std::chrono::steady_clock::now();
+    auto ms = [&](std::chrono::steady_clock::time_point since)
+    {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
+            .count();
+    };
+    if (similarity.rows() != static_cast<Eigen::Index>(ground_truth.vertices.size()) ||
+        similarity.cols() != static_cast<Eigen::Index>(map.vertices.size()))
+        throw InputError("similarity matrix is " + std::to_string(similarity.rows()) + " x " +
+                         std::to_string(similarity.cols()) + " but the graphs have " +
+                         std::to_string(ground_truth.vertices.size()) + " and " +
+                         std::to_string(map.vertices.size()) + " vertices");
+
+    const internal::MatchView gt_view = internal::makeMatchView(ground_truth);
+    const internal::MatchView map_view = internal::makeMatchView(map);
+    GraphMatch match;
+    const int n_gt = gt_view.numActive(), n_map = map_view.numActive();
+    if (n_gt == 0 || n_map == 0)
+    {
+        match.messages.push_back(
+            n_gt == 0 ? "the ground truth's graph has no vertex to match: nothing is matched"
+                      : "the map's graph has no vertex to match: nothing is matched");
+        match.missing = static_cast<std::size_t>(n_gt);
+        match.timing_ms["total"] = ms(t0);
+        return match;
+    }
+
+    internal::MatchContext ctx{gt_view,
+                               map_view,
+                               similarity,
+                               params,
+                               std::vector<int>(ground_truth.vertices.size(), -1),
+                               std::vector<int>(map.vertices.size(), -1)};
+    const auto t_iso = std::chrono::steady_clock::now();
+    const std::vector<internal::Isomorphism> isos = internal::findIsomorphisms(ctx);
+    match.timing_ms["isomorphism"] = ms(t_iso);
+
+    std::vector<int> iso_of_gt(ground_truth.vertices.size(), -1);
+    for (int i = 0; i < static_cast<int>(isos.size()); ++i)
+    {
+        match.isomorphism_sizes.push_back(isos[i].pairs.size());
+        for (const auto& [a, b] : isos[i].pairs)
+        {
+            iso_of_gt[a] = i;
+            match.pairs.push_back({a, b, MatchStage::Isomorphism, similarity(a, b), i});
+        }
+    }
+    match.isomorphism = match.pairs.size();
+
+    if (params.neighbour_growing && !isos.empty())
+    {
+        const auto t_grow = std::chrono::steady_clock::now();
+        for (const auto& g : internal::growNeighbours(ctx, iso_of_gt))
+            match.pairs.push_back({g.gt, g.map, MatchStage::NeighbourGrowing,
+                                   similarity(g.gt, g.map), g.isomorphism});
+        match.timing_ms["neighbour_growing"] = ms(t_grow);
+    }
+    match.neighbour_growing = match.pairs.size() - match.isomorphism;
+    match.missing = static_cast<std::size_t>(n_gt) - match.pairs.size();
+    std::sort(match.pairs.begin(), match.pairs.end(),
+              [](const VertexPair& x, const VertexPair& y)
+              { return x.ground_truth < y.ground_truth; });
+
+    if (isos.empty())
+    {
+        bool any_degree = false;
+        for (const auto& va : gt_view.v)
+            for (const auto& vb : map_view.v)
+                any_degree = any_degree || (va.active && vb.active && va.degree() == vb.degree());
+        match.messages.push_back(
+            any_degree
+                ? "no isomorphism of at least " + std::to_string(params.min_isomorphism_vertices) +
+                      " vertices was found: the maps share no structure the matcher "
+                      "trusts"
+                : "no vertex of the map has the degree of any ground-truth vertex: "
+                  "nothing is matched");
+    }
+    match.timing_ms["total"] = ms(t0);
+    return match;
+}
+
+}  // namespace mrpt_topoeval
