@@ -17,6 +17,8 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <optional>
+#include <set>
 
 #include "synthetic_maps.h"
 #include "test_paths.h"
@@ -152,8 +154,11 @@ TEST(GraphMatcher, ResampledAndNoisyCopies)
     // At least 85% matched in every case, at least 98% of all matches correct.
     const auto grid = makeOfficeMap();
     std::size_t pairs = 0, correct = 0;
-    for (auto [yaw, res, noise] : {std::tuple{0.0, 0.1, 0.0}, {41.0, 0.1, 0.0}, {0.0, 0.0, 0.03},
-                                   {250.0, 0.0, 0.03}, {163.0, 0.1, 0.02}})
+    for (auto [yaw, res, noise] : {std::tuple{0.0, 0.1, 0.0},
+                                   {41.0, 0.1, 0.0},
+                                   {0.0, 0.0, 0.03},
+                                   {250.0, 0.0, 0.03},
+                                   {163.0, 0.1, 0.02}})
     {
         const Outcome o = moved(grid, yaw, {1.0, 2.0}, res, noise);
         EXPECT_GE(o.matched_share(), 0.85) << yaw << " " << res << " " << noise;
@@ -282,5 +287,61 @@ TEST(GraphMatcher, RealMapsRotatedAndShifted)
         const Outcome o = realMoved(rel, 117.0, {3.0, -8.0});
         EXPECT_GE(o.matched_share(), 0.80) << rel;
         EXPECT_GE(o.correct_share(), 0.85) << rel;
+    }
+}
+
+namespace
+{
+struct TableRow
+{
+    std::size_t vertices = 0, half_edges = 0;
+    GraphMatch match;
+};
+
+// One row of the paper's Table II for a real pair (empty when ../shared/data is absent).
+std::optional<TableRow> tableRow(const std::string& gt_rel, const std::string& map_rel)
+{
+    const auto gt_file = sharedDataFile(gt_rel), map_file = sharedDataFile(map_rel);
+    if (!gt_file || !map_file) return std::nullopt;
+    const auto gt_grid = loadMap(*gt_file).grid, map_grid = loadMap(*map_file).grid;
+    const Parameters tp = tunedParameters();
+    const TopologyGraph gt = buildTopologyGraph(gt_grid, tp.graph),
+                        map = buildTopologyGraph(map_grid, tp.graph);
+    TableRow row;
+    row.vertices = map.vertices.size();
+    row.half_edges = map.numHalfEdges();
+    row.match = tunedMatch(gt, map);
+    std::string name = map_rel;
+    std::replace(name.begin(), name.end(), '/', '_');
+    picture(gt_grid, gt, map_grid, map, row.match, "pair_" + name);
+    if (std::getenv("TOPOEVAL_DEBUG"))
+        std::cout << "  " << gt_rel << " (" << gt.vertices.size() << " v, " << gt.numHalfEdges()
+                  << " he) vs " << map_rel << " (" << row.vertices << " v, " << row.half_edges
+                  << " he): isomorphism " << row.match.isomorphism << ", neighbour growing "
+                  << row.match.neighbour_growing << ", missing " << row.match.missing << "\n";
+    return row;
+}
+}  // namespace
+
+TEST(GraphMatcher, RealPairsTableII)
+{
+    // The paper's Table II for the real pairs; the figures are reported in doc/matching.md. The
+    // ICP-SLAM Intel map is bent and broken against the reference and most of its rooms are
+    // barely observed; the house ground truth is a bare floor plan of 4 vertices while the robot
+    // maps are furnished. What must hold: each pair is matched without crash or hang, one map
+    // vertex per pair, and the counts add up.
+    const char* gt_house = "house/house_gt_trinary_res0.05.yaml";
+    for (auto [gt_rel, map_rel] :
+         {std::pair{"radish/intel-corrected_ref.yaml", "slam_maps/intel_icp-slam_app-final.yaml"},
+          {gt_house, "house/map_6ccdcaa.yaml"},
+          {gt_house, "house/map_2333d24.yaml"}})
+    {
+        const auto row = tableRow(gt_rel, map_rel);
+        if (!row) GTEST_SKIP() << "no ../shared/data";
+        const GraphMatch& m = row->match;
+        EXPECT_EQ(m.isomorphism + m.neighbour_growing, m.pairs.size());
+        std::set<int> maps;
+        for (const auto& p : m.pairs) EXPECT_TRUE(maps.insert(p.map).second) << map_rel;
+        if (m.pairs.empty()) EXPECT_FALSE(m.messages.empty()) << map_rel;
     }
 }
