@@ -1,6 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 // The `topoeval` command end to end: help, exit codes, one-line errors naming the file,
-// outputs never overwritten without --force, deterministic JSON, the bad-input corpus.
+// outputs never overwritten without --force, deterministic JSON, pictures of the construction
+// steps, the bad-input corpus.
 
 #include <gtest/gtest.h>
 #include <mrpt_topoeval/Parameters.h>
@@ -188,6 +189,8 @@ TEST_F(Cli, UsageErrorsExit2WithOneLine)
     expectOneLineError(run("graph map.yaml --resolution abc"), 2, "resolution");
     expectOneLineError(run("graph map.yaml --image out.jpg"), 2, "out.jpg");
     expectOneLineError(run("graph map.yaml --image-scale 9"), 2, "--image-scale 9");
+    expectOneLineError(run("graph map.yaml --steps ''"), 2, "--steps needs a folder");
+    expectOneLineError(run("graph map.yaml --steps out --image out/05_joined.png"), 2, "same file");
     expectOneLineError(run("config --write a.ini --check b.ini"), 2, "cannot be combined");
 }
 
@@ -254,7 +257,9 @@ TEST_F(Cli, MapsWithoutObstaclesOrFreeSpaceGiveAnEmptyGraphAndAWarning)
         const std::string map = writeUniformRosMap(dir, name, 40, 30, grey);
         const std::string json = dir + "/" + name + ".json";
         const std::string png = dir + "/" + name + ".png";
-        const RunResult r = run("graph " + q(map) + " --json " + q(json) + " --image " + q(png));
+        const std::string steps = dir + "/" + name + "_steps";
+        const RunResult r = run("graph " + q(map) + " --json " + q(json) + " --image " + q(png) +
+                                " --steps " + q(steps));
         EXPECT_EQ(r.code, 0) << r.err;
         EXPECT_TRUE(contains(r.err, "topoeval: warning: ")) << name << ": " << r.err;
         EXPECT_FALSE(contains(r.err, "error")) << r.err;
@@ -262,6 +267,9 @@ TEST_F(Cli, MapsWithoutObstaclesOrFreeSpaceGiveAnEmptyGraphAndAWarning)
         EXPECT_TRUE(contains(text, "\"vertices\": [],")) << text;
         EXPECT_TRUE(contains(text, "\"edges\": [],")) << text;
         EXPECT_TRUE(fs::exists(png));
+        // The builder stops before its first step; every step's (empty) graph is still drawn.
+        EXPECT_EQ(listing(steps).size(), 5u);
+        EXPECT_TRUE(fs::exists(steps + "/05_joined.png"));
         EXPECT_TRUE(contains(r.out, "vertices   0")) << r.out;
     }
 }
@@ -313,6 +321,47 @@ TEST_F(Cli, HouseMapJsonAndPngAreDeterministic)
     EXPECT_EQ(listing(dir).size(), 4u);  // a.json a.png b.json b.png, no temporary files
 }
 
+TEST_F(Cli, GraphStepsDrawsEachConstructionStepAndNeverOverwrites)
+{
+    const std::string map = shareDir() + "/maps/house_gt_trinary_res0.05.yaml";
+    if (!fs::exists(map)) GTEST_SKIP() << map << " is not there";
+    const ScopedTempDir dir_tmp("cli");
+    const std::string steps = dir_tmp.path + "/steps";  // created by the run
+    const std::string final_png = dir_tmp.path + "/final.png";
+    const std::vector<std::string> names = {"01_voronoi.png", "02_pruned.png", "03_alpha_cut.png",
+                                            "04_largest_component.png", "05_joined.png"};
+
+    const RunResult r =
+        run("graph " + q(map) + " --steps " + q(steps) + " --image " + q(final_png));
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::vector<std::string> before;
+    for (const auto& name : names)
+    {
+        const std::string file = steps + "/" + name;
+        before.push_back(readText(file));
+        EXPECT_EQ(before.back().substr(0, 4), "\x89PNG") << file;
+        EXPECT_TRUE(contains(r.out, "wrote      " + file)) << r.out;
+    }
+    EXPECT_EQ(listing(steps).size(), names.size());  // the five pictures, nothing else
+    // The last step is the final graph: the same picture as --image.
+    EXPECT_EQ(before.back(), readText(final_png));
+    // Pruning removes branches: the Voronoi step's picture differs from the pruned one.
+    EXPECT_NE(before[0], before[1]);
+
+    // Again without --force: refused before any work, every picture left as it was.
+    const RunResult again = run("graph " + q(map) + " --steps " + q(steps));
+    expectOneLineError(again, 3, steps + "/01_voronoi.png: exists; pass --force");
+    for (std::size_t i = 0; i < names.size(); ++i)
+        EXPECT_EQ(readText(steps + "/" + names[i]), before[i]) << names[i];
+    EXPECT_EQ(listing(steps).size(), names.size());  // no temporary files left
+
+    const RunResult forced = run("graph " + q(map) + " --steps " + q(steps) + " --force");
+    EXPECT_EQ(forced.code, 0) << forced.err;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        EXPECT_EQ(readText(steps + "/" + names[i]), before[i]) << names[i];  // deterministic
+    EXPECT_EQ(listing(steps).size(), names.size());
+}
+
 TEST_F(Cli, EveryBadInputIsRejectedCleanly)
 {
     const fs::path corpus = fs::path(testsDir()) / "data" / "bad_inputs";
@@ -340,4 +389,213 @@ TEST_F(Cli, EveryBadInputIsRejectedCleanly)
         EXPECT_TRUE(contains(r.err, f.filename().string())) << r.err;
         EXPECT_TRUE(listing(out_dir).empty()) << "output written for a bad input";
     }
+}
+
+// ---------------------------------------------------------------- topoeval match
+
+namespace
+{
+/** The integer after the first occurrence of `key` (e.g. "\"missing\": ") at or after `from`,
+ * or -1. */
+long numberAfter(const std::string& text, const std::string& key, std::size_t from = 0)
+{
+    const auto at = text.find(key, from);
+    if (at == std::string::npos) return -1;
+    return std::strtol(text.c_str() + at + key.size(), nullptr, 10);
+}
+
+/** The vertex ids of `topoeval graph --json` output (the edges' ids are not vertex ids). */
+std::vector<long> graphVertexIds(const std::string& graph_json)
+{
+    std::vector<long> ids;
+    const auto begin = graph_json.find("\n  \"vertices\": [");
+    const auto end = graph_json.find("\n  \"edges\": [");
+    if (begin == std::string::npos || end == std::string::npos) return ids;
+    for (auto at = graph_json.find("\"id\": ", begin); at < end;
+         at = graph_json.find("\"id\": ", at + 1))
+        ids.push_back(numberAfter(graph_json, "\"id\": ", at));
+    return ids;
+}
+
+/** (ground truth, map) ids of the pairs of `topoeval match --json` output. */
+std::vector<std::pair<long, long>> matchPairs(const std::string& match_json)
+{
+    std::vector<std::pair<long, long>> pairs;
+    const std::string key = "{\"ground_truth\": ";
+    for (auto at = match_json.find(key); at != std::string::npos; at = match_json.find(key, at + 1))
+        pairs.emplace_back(numberAfter(match_json, key, at),
+                           numberAfter(match_json, "\"map\": ", at));
+    return pairs;
+}
+
+bool hasId(const std::vector<long>& ids, long id)
+{
+    return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+}  // namespace
+
+TEST_F(Cli, MatchHelpAndUsageErrors)
+{
+    for (const std::string args : {"match --help", "match -h", "help match"})
+    {
+        const RunResult r = run(args);
+        EXPECT_EQ(r.code, 0) << args << ": " << r.err;
+        EXPECT_TRUE(contains(r.out, "topoeval match")) << r.out;
+        EXPECT_TRUE(contains(r.out, "--similarity")) << r.out;
+        EXPECT_TRUE(r.err.empty()) << r.err;
+    }
+    EXPECT_TRUE(contains(run("--help").out, "\n  match ")) << "match is not in the verb list";
+
+    expectOneLineError(run("match"), 2, "missing the GT and MAP arguments");
+    expectOneLineError(run("match gt.yaml"), 2, "missing the MAP argument");
+    expectOneLineError(run("match a.yaml b.yaml c.yaml"), 2, "unexpected 'c.yaml'");
+    expectOneLineError(run("match a.yaml b.yaml --similarity fast"), 2, "--similarity 'fast'");
+    expectOneLineError(run("match a.yaml b.yaml --threads -2"), 2, "--threads -2");
+    expectOneLineError(run("match a.yaml b.yaml --image out.jpg"), 2, "out.jpg");
+}
+
+TEST_F(Cli, MatchIdsAreTheGraphVerbsIdsAndOutputsAreDeterministic)
+{
+    const std::string maps = shareDir() + "/maps/";
+    const std::string gt = maps + "house_gt_trinary_res0.05.yaml";
+    const std::string robot = maps + "map_6ccdcaa.yaml";
+    const std::string other = maps + "map_2333d24.yaml";
+    for (const auto& f : {gt, robot, other})
+        if (!fs::exists(f)) GTEST_SKIP() << f << " is not there";
+    const ScopedTempDir dir_tmp("cli_match");
+    const std::string& dir = dir_tmp.path;
+
+    // The graphs as `topoeval graph --json` prints them.
+    std::vector<std::vector<long>> ids;
+    for (const auto& [name, map] :
+         {std::pair<std::string, std::string>{"gt", gt}, {"robot", robot}, {"other", other}})
+    {
+        const std::string json = dir + "/graph_" + name + ".json";
+        const RunResult r = run("graph " + q(map) + " --json " + q(json));
+        ASSERT_EQ(r.code, 0) << r.err;
+        ids.push_back(graphVertexIds(readText(json)));
+        EXPECT_FALSE(ids.back().empty()) << map;
+    }
+
+    // The pair (house ground truth against a robot map), and two robot maps of one
+    // environment, which share structure: their match is not empty.
+    struct Case
+    {
+        std::string gt, map;
+        std::size_t gt_ids, map_ids;
+        bool expect_pairs;
+    };
+    for (const Case& c : {Case{gt, robot, 0, 1, false}, Case{other, robot, 2, 1, true}})
+    {
+        SCOPED_TRACE(c.gt + " vs " + c.map);
+        const std::string json = dir + "/match.json", png = dir + "/match.png";
+        const std::string args = "match " + q(c.gt) + " " + q(c.map) + " --json " + q(json) +
+                                 " --image " + q(png) + " --force";
+        const RunResult a = run(args);
+        ASSERT_EQ(a.code, 0) << a.err;
+        const std::string ja = readText(json), pa = readText(png);
+        const RunResult b = run(args);
+        ASSERT_EQ(b.code, 0) << b.err;
+        EXPECT_EQ(withoutTiming(readText(json)), withoutTiming(ja));
+        EXPECT_EQ(readText(png), pa);
+        EXPECT_EQ(pa.substr(0, 4), "\x89PNG");
+
+        EXPECT_TRUE(contains(ja, "\"ground_truth\": {\n    \"file\": \"" + c.gt + "\"")) << ja;
+        EXPECT_TRUE(contains(ja, "\"map\": {\n    \"file\": \"" + c.map + "\"")) << ja;
+        EXPECT_TRUE(contains(ja, "\"timing_ms\": {")) << ja;
+        const auto pairs = matchPairs(ja);
+        if (c.expect_pairs)
+        {
+            EXPECT_FALSE(pairs.empty()) << ja;
+        }
+        for (const auto& [g, m] : pairs)
+        {
+            EXPECT_TRUE(hasId(ids[c.gt_ids], g)) << "ground-truth id " << g;
+            EXPECT_TRUE(hasId(ids[c.map_ids], m)) << "map id " << m;
+        }
+
+        // The counts add up to the pairs and appear in the summary as in the JSON.
+        const auto matches = ja.find("\"matches\": {");
+        const long iso = numberAfter(ja, "\"isomorphism\": ", matches);
+        const long grow = numberAfter(ja, "\"neighbour_growing\": ", matches);
+        const long missing = numberAfter(ja, "\"missing\": ", matches);
+        EXPECT_EQ(static_cast<std::size_t>(iso + grow), pairs.size());
+        EXPECT_TRUE(contains(a.out, "isomorphism " + std::to_string(iso) + ", neighbour growing " +
+                                        std::to_string(grow) + ", missing " +
+                                        std::to_string(missing)))
+            << a.out;
+        for (const char* key : {"ground truth  ", "map           ", "matches       ",
+                                "isomorphisms  ", "time [ms]     "})
+            EXPECT_TRUE(contains(a.out, key)) << key << " missing in the summary:\n" << a.out;
+    }
+}
+
+TEST_F(Cli, MatchOfAMapWithItselfIsComplete)
+{
+    const std::string map = shareDir() + "/maps/map_6ccdcaa.yaml";
+    if (!fs::exists(map)) GTEST_SKIP() << map << " is not there";
+    const ScopedTempDir dir_tmp("cli_match");
+    const std::string json = dir_tmp.path + "/self.json";
+    const RunResult r = run("match " + q(map) + " " + q(map) + " --json " + q(json));
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string text = readText(json);
+    EXPECT_TRUE(contains(text, "\"missing\": 0,")) << text;
+    const auto pairs = matchPairs(text);
+    EXPECT_FALSE(pairs.empty());
+    for (const auto& [g, m] : pairs) EXPECT_EQ(g, m) << "identical graphs match identically";
+}
+
+TEST_F(Cli, MatchWithAnEmptyGraphIsAnEmptyMatchAndAWarning)
+{
+    const std::string house = shareDir() + "/maps/house_gt_trinary_res0.05.yaml";
+    if (!fs::exists(house)) GTEST_SKIP() << house << " is not there";
+    const ScopedTempDir dir_tmp("cli_match");
+    const std::string& dir = dir_tmp.path;
+    const std::string empty = writeUniformRosMap(dir, "all_free", 40, 30, 255);
+    for (const auto& [gt, map] :
+         {std::pair<std::string, std::string>{empty, house}, {house, empty}, {empty, empty}})
+    {
+        SCOPED_TRACE(gt + " vs " + map);
+        const std::string json = dir + "/m.json", png = dir + "/m.png";
+        const RunResult r = run("match " + q(gt) + " " + q(map) + " --json " + q(json) +
+                                " --image " + q(png) + " --force");
+        EXPECT_EQ(r.code, 0) << r.err;
+        EXPECT_TRUE(contains(r.err, "topoeval: warning: " + empty)) << r.err;
+        EXPECT_FALSE(contains(r.err, "error")) << r.err;
+        EXPECT_TRUE(contains(readText(json), "\"pairs\": [],")) << readText(json);
+        EXPECT_EQ(readText(png).substr(0, 4), "\x89PNG");
+    }
+}
+
+TEST_F(Cli, MatchBadInputAndExistingOutputs)
+{
+    const std::string map = shareDir() + "/maps/map_6ccdcaa.yaml";
+    if (!fs::exists(map)) GTEST_SKIP() << map << " is not there";
+    const ScopedTempDir dir_tmp("cli_match");
+    const std::string& dir = dir_tmp.path;
+    const std::string json = dir + "/m.json", png = dir + "/m.png";
+    const std::string outputs = " --json " + q(json) + " --image " + q(png);
+
+    // A missing map, as ground truth or as map: exit 2 naming it, nothing written.
+    const std::string none = dir + "/no_such_map.yaml";
+    expectOneLineError(run("match " + q(none) + " " + q(map) + outputs), 2, none);
+    expectOneLineError(run("match " + q(map) + " " + q(none) + outputs), 2, none);
+    EXPECT_TRUE(listing(dir).empty());
+
+    // Existing outputs are refused before any work, and left as they were.
+    writeText(json, "mine");
+    writeText(png, "mine too");
+    expectOneLineError(run("match " + q(map) + " " + q(map) + outputs), 3,
+                       json + ": exists; pass --force");
+    expectOneLineError(run("match " + q(map) + " " + q(map) + " --image " + q(png)), 3,
+                       png + ": exists; pass --force");
+    EXPECT_EQ(readText(json), "mine");
+    EXPECT_EQ(readText(png), "mine too");
+    expectOneLineError(run("match " + q(map) + " " + q(map) + " --json " + q(map) + " --force"), 2,
+                       "is an input of this run");
+
+    const RunResult forced = run("match " + q(map) + " " + q(map) + outputs + " --force");
+    EXPECT_EQ(forced.code, 0) << forced.err;
+    EXPECT_TRUE(contains(readText(json), "\"matches\": {"));
+    EXPECT_EQ(listing(dir).size(), 2u);  // no temporary files left
 }

@@ -242,7 +242,7 @@ TEST(GraphMatcher, SmallAndDegenerateGraphsGiveAMessageNotACrash)
         {
             const GraphMatch m = matchGraphs(*a, *b, attributeSimilarity(*a, *b, {}));
             EXPECT_LE(m.pairs.size(), std::min(a->vertices.size(), b->vertices.size()));
-            if (m.pairs.empty()) EXPECT_FALSE(m.messages.empty());
+            EXPECT_TRUE(!m.pairs.empty() || !m.messages.empty());
         }
     // The office has no degree-4 vertex: nothing of the plus crossing's centre can match it.
     const GraphMatch m = matchGraphs(plus, office, attributeSimilarity(plus, office, {}));
@@ -342,6 +342,6 @@ TEST(GraphMatcher, RealPairsTableII)
         EXPECT_EQ(m.isomorphism + m.neighbour_growing, m.pairs.size());
         std::set<int> maps;
         for (const auto& p : m.pairs) EXPECT_TRUE(maps.insert(p.map).second) << map_rel;
-        if (m.pairs.empty()) EXPECT_FALSE(m.messages.empty()) << map_rel;
+        EXPECT_TRUE(!m.pairs.empty() || !m.messages.empty()) << map_rel;
     }
 }

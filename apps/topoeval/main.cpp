@@ -9,6 +9,9 @@
 
 namespace mrpt_topoeval::cli
 {
+/** `topoeval match GT MAP [options]`: the match of two maps' Topology Graphs (verb_match.cpp). */
+int verbMatch(int argc, char** argv);
+
 namespace
 {
 struct Verb
@@ -23,6 +26,8 @@ const std::vector<Verb>& verbs()
     static const std::vector<Verb> kVerbs = {
         {"graph", "Build a map's Topology Graph: summary, --json graph, --image picture.",
          verbGraph},
+        {"match", "Match a map's graph against the ground truth's: counts, --json, --image.",
+         verbMatch},
         {"config", "Print, --write or --check the INI configuration.", verbConfig},
     };
     return kVerbs;

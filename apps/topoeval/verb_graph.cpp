@@ -1,6 +1,6 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 // `topoeval graph MAP`: builds the Topology Graph of one map, prints a one-screen summary and
-// optionally writes it as JSON and as a picture.
+// optionally writes it as JSON, as a picture, and as one picture per construction step.
 
 #include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/drawing.h>
@@ -15,6 +15,11 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
 
 #include "cli_common.h"
 
@@ -92,6 +97,22 @@ void printSummary(std::ostream& os, const LoadedMap& lm, const TopologyGraph& g,
     for (const auto& w : written) os << "wrote      " << w << "\n";
 }
 
+/** The builder's steps as GraphBuildObserver reports them, in order (GraphBuilder.h); --steps
+ * writes step i as "NN_<step>.png", NN = i + 1. */
+const std::vector<std::string>& buildSteps()
+{
+    static const std::vector<std::string> kSteps = {"voronoi", "pruned", "alpha_cut",
+                                                    "largest_component", "joined"};
+    return kSteps;
+}
+
+std::string stepPicturePath(const std::string& dir, std::size_t index)
+{
+    const std::string number = std::to_string(index + 1);
+    const std::string prefix = (number.size() < 2 ? "0" : "") + number + "_";
+    return (fs::path(dir) / (prefix + buildSteps()[index] + ".png")).string();
+}
+
 bool endsWithPng(const std::string& path)
 {
     std::string ext = fs::path(path).extension().string();
@@ -109,19 +130,24 @@ int verbGraph(int argc, char** argv)
         "Builds the Topology Graph of a grid map (Schwertfeger & Birk 2013, section II) and "
         "prints a summary: vertices, half edges, total edge length, degrees, time per step. "
         "--json writes the graph (coordinates in metres in the map's frame), --image draws it "
-        "over the map. Existing files are never replaced without --force; outputs are written "
-        "only after everything succeeded. Exit codes: 0 ok, 1 internal error, 2 bad input or "
-        "usage, 3 output error.");
+        "over the map, --steps draws it after each construction step. Existing files are never "
+        "replaced without --force; outputs are written only after everything succeeded. Exit "
+        "codes: 0 ok, 1 internal error, 2 bad input or usage, 3 output error.");
     TCLAP::CmdLine& cmd = cl.cmd();
     // Declared in reverse order of the usage line (TCLAP lists the last added first).
     TCLAP::SwitchArg force_arg("f", "force", "Replace existing output files.", cmd);
-    TCLAP::SwitchArg no_ids_arg("", "no-ids", "Do not write vertex ids in the --image picture.",
-                                cmd);
-    TCLAP::ValueArg<int> scale_arg(
-        "", "image-scale",
-        "Pixels per map cell in the --image picture, 1..8 (default: 2; 1 for maps over " +
-            std::to_string(kLargeMapCells) + " cells wide or high).",
-        false, 0, "N", cmd);
+    TCLAP::SwitchArg no_ids_arg("", "no-ids", "Do not write vertex ids in the pictures.", cmd);
+    TCLAP::ValueArg<std::string> steps_arg(
+        "", "steps",
+        "Draw the graph after each construction step into this folder (created if missing): "
+        "01_voronoi.png, 02_pruned.png, 03_alpha_cut.png, 04_largest_component.png, "
+        "05_joined.png (the final graph).",
+        false, "", "DIR", cmd);
+    TCLAP::ValueArg<int> scale_arg("", "image-scale",
+                                   "Pixels per map cell in the --image and --steps pictures, 1..8 "
+                                   "(default: 2; 1 for maps over " +
+                                       std::to_string(kLargeMapCells) + " cells wide or high).",
+                                   false, 0, "N", cmd);
     TCLAP::ValueArg<std::string> image_arg(
         "i", "image", "Draw the graph over the map into this PNG file.", false, "", "OUT.png", cmd);
     TCLAP::ValueArg<std::string> json_arg("j", "json", "Write the graph as JSON to this file.",
@@ -153,9 +179,24 @@ int verbGraph(int argc, char** argv)
     if (scale_arg.isSet() && (scale_arg.getValue() < 1 || scale_arg.getValue() > 8))
         throw cl.usageError("--image-scale " + std::to_string(scale_arg.getValue()) +
                             " violates 1 <= N <= 8");
-    if (!json_path.empty() && !image_path.empty() &&
-        fs::absolute(json_path).lexically_normal() == fs::absolute(image_path).lexically_normal())
-        throw cl.usageError("--json and --image name the same file " + json_path);
+    const std::string steps_dir = steps_arg.getValue();
+    if (steps_arg.isSet() && steps_dir.empty()) throw cl.usageError("--steps needs a folder name");
+    std::vector<std::string> step_paths;
+    if (!steps_dir.empty())
+        for (std::size_t i = 0; i < buildSteps().size(); ++i)
+            step_paths.push_back(stepPicturePath(steps_dir, i));
+
+    // No two outputs may name the same file.
+    std::vector<std::pair<std::string, std::string>> outputs;  // (option, file)
+    if (!json_path.empty()) outputs.emplace_back("--json", json_path);
+    if (!image_path.empty()) outputs.emplace_back("--image", image_path);
+    for (const auto& p : step_paths) outputs.emplace_back("--steps", p);
+    for (std::size_t i = 0; i < outputs.size(); ++i)
+        for (std::size_t k = i + 1; k < outputs.size(); ++k)
+            if (fs::absolute(outputs[i].second).lexically_normal() ==
+                fs::absolute(outputs[k].second).lexically_normal())
+                throw cl.usageError(outputs[i].first + " and " + outputs[k].first +
+                                    " name the same file " + outputs[i].second);
 
     const Parameters params =
         loadParameters(config_arg.getValue(),
@@ -163,15 +204,30 @@ int verbGraph(int argc, char** argv)
 
     // Refuse unwritable outputs now rather than after the work.
     const std::vector<std::string> inputs = {map_path, config_arg.getValue()};
-    if (!json_path.empty()) checkOutputPath(json_path, force, inputs);
-    if (!image_path.empty()) checkOutputPath(image_path, force, inputs);
+    std::error_code ec;
+    if (!steps_dir.empty() && fs::exists(steps_dir, ec) && !fs::is_directory(steps_dir, ec))
+        throw OutputError("--steps " + steps_dir + ": is not a folder");
+    for (const auto& out : outputs) checkOutputPath(out.second, force, inputs);
 
     auto t0 = Clock::now();
     const LoadedMap lm = loadMap(map_path, params.map_load);
     const double load_ms = msSince(t0);
 
+    // --steps: keep the graph of each step (smaller than its picture); drawn after the build.
+    std::vector<TopologyGraph> step_graphs(step_paths.size());
+    GraphBuildObserver observer;
+    if (!step_paths.empty())
+        observer = [&](const std::string& step, const TopologyGraph& g)
+        {
+            const auto& names = buildSteps();
+            const auto it = std::find(names.begin(), names.end(), step);
+            if (it == names.end())
+                throw std::logic_error("graph builder reported an unknown step '" + step + "'");
+            step_graphs[static_cast<std::size_t>(it - names.begin())] = g;
+        };
+
     GraphBuildStats stats;
-    TopologyGraph graph = buildTopologyGraph(lm.grid, params.graph, &stats);
+    TopologyGraph graph = buildTopologyGraph(lm.grid, params.graph, &stats, observer);
     graph.map.file = lm.file;
     stats.timing_ms["load_map"] = load_ms;
 
@@ -182,16 +238,26 @@ int verbGraph(int argc, char** argv)
     // Everything is produced in memory first: a failure leaves no output behind.
     std::string json_text;
     if (!json_path.empty()) json_text = graphToJson(graph, &stats);
+    DrawOptions draw;
+    const bool large = std::max(graph.map.size_x, graph.map.size_y) > kLargeMapCells;
+    draw.scale = scale_arg.isSet() ? scale_arg.getValue() : (large ? 1 : 2);
+    draw.draw_ids = !no_ids_arg.getValue();
     mrpt::img::CImage picture;
     if (!image_path.empty())
     {
         t0 = Clock::now();
-        DrawOptions draw;
-        const bool large = std::max(graph.map.size_x, graph.map.size_y) > kLargeMapCells;
-        draw.scale = scale_arg.isSet() ? scale_arg.getValue() : (large ? 1 : 2);
-        draw.draw_ids = !no_ids_arg.getValue();
         picture = drawTopologyGraph(lm.grid, graph, draw);
         stats.timing_ms["draw"] = msSince(t0);
+    }
+    // A map with no obstacles or no free space stops the builder before its first step: every
+    // step's graph is then empty, and is drawn so.
+    std::vector<mrpt::img::CImage> step_pictures;
+    if (!step_paths.empty())
+    {
+        t0 = Clock::now();
+        for (const TopologyGraph& g : step_graphs)
+            step_pictures.push_back(drawTopologyGraph(lm.grid, g, draw));
+        stats.timing_ms["draw_steps"] = msSince(t0);
     }
 
     std::vector<std::string> written;
@@ -204,6 +270,11 @@ int verbGraph(int argc, char** argv)
     {
         writePngAtomic(image_path, picture, force);
         written.push_back(image_path);
+    }
+    for (std::size_t i = 0; i < step_paths.size(); ++i)
+    {
+        writePngAtomic(step_paths[i], step_pictures[i], force);
+        written.push_back(step_paths[i]);
     }
 
     printSummary(std::cout, lm, graph, stats.timing_ms, msSince(t_run), written);

@@ -24,6 +24,7 @@ const char* const kMapLoadSection = "MapLoad";
 const char* const kGraphBuilderSection = "GraphBuilder";
 const char* const kSimilaritySection = "VertexSimilarity";
 const char* const kMatcherSection = "GraphMatcher";
+const char* const kQualitySection = "QualityEvaluator";
 
 // A configuration file is a few kilobytes; anything much larger is the wrong file.
 constexpr std::uintmax_t kMaxIniBytes = 1 << 20;
@@ -47,6 +48,8 @@ const std::map<std::string, std::string> kSectionComments = {
      "# Similarity of two vertices, from attributes or by ICP (paper section III-A)."},
     {kMatcherSection,
      "# Matching two graphs: isomorphism by wavefront, neighbour growing (paper III-B)."},
+    {kQualitySection,
+     "# Map attributes and scores from the match (paper section IV; doc/quality.md)."},
 };
 
 std::string trim(const std::string& s)
@@ -333,6 +336,7 @@ void Parameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, cons
     graph.loadFromConfigFile(c, s + kGraphBuilderSection);
     similarity.loadFromConfigFile(c, s + kSimilaritySection);
     matcher.loadFromConfigFile(c, s + kMatcherSection);
+    quality.loadFromConfigFile(c, s + kQualitySection);
 }
 
 void Parameters::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
@@ -354,6 +358,7 @@ void Parameters::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::s
     graph.saveToConfigFile(c, s + kGraphBuilderSection);
     similarity.saveToConfigFile(c, s + kSimilaritySection);
     matcher.saveToConfigFile(c, s + kMatcherSection);
+    quality.saveToConfigFile(c, s + kQualitySection);
 }
 
 void Parameters::validate() const
@@ -376,7 +381,8 @@ void Parameters::validate() const
                          ")");
     if (m.max_cells == 0) throw InputError(sec + "max_cells = 0 violates max_cells > 0");
 
-    auto validateSection = [](const char* section, auto& part) {
+    auto validateSection = [](const char* section, auto& part)
+    {
         try
         {
             part.validate();
@@ -389,6 +395,7 @@ void Parameters::validate() const
     validateSection(kGraphBuilderSection, graph);
     validateSection(kSimilaritySection, similarity);
     validateSection(kMatcherSection, matcher);
+    validateSection(kQualitySection, quality);
 }
 
 Parameters Parameters::fromIniFile(const std::string& path)

@@ -4,6 +4,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/map_io.h>
 
@@ -18,6 +19,7 @@ struct Parameters : public mrpt::config::CLoadableOptions
     GraphBuilderParameters graph;           //!< `[GraphBuilder]`
     VertexSimilarityParameters similarity;  //!< `[VertexSimilarity]`
     GraphMatcherParameters matcher;         //!< `[GraphMatcher]`
+    QualityParameters quality;              //!< `[QualityEvaluator]`
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                             const std::string& s = {}) override;

@@ -3,6 +3,7 @@
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt_topoeval/GraphMatch.h>
 #include <mrpt_topoeval/TopologyGraph.h>
 
 namespace mrpt_topoeval
@@ -18,8 +19,24 @@ struct DrawOptions
 /** The grid map with its Topology Graph drawn over it, like the paper's Fig. 1 and 4: edges
  * along their paths (dead ends and spurious parts in their own colours), vertices, ids. Top of
  * the picture is +y. */
-mrpt::img::CImage drawTopologyGraph(
-    const mrpt::maps::COccupancyGridMap2D& grid, const TopologyGraph& graph,
-    const DrawOptions& opts = {});
+mrpt::img::CImage drawTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
+                                    const TopologyGraph& graph, const DrawOptions& opts = {});
+
+/** A match of two Topology Graphs, like the paper's Fig. 5 and 7: the ground-truth map (left)
+ * and the robot map (right) side by side, each with its graph drawn as by drawTopologyGraph(),
+ * scaled to a common height; a line from each matched ground-truth vertex to its map vertex,
+ * green for isomorphism and red for neighbour growing; a ring around each ground-truth vertex
+ * that GraphMatch::missing counts (non-spurious, unmatched); the file names above and a legend
+ * with the counts below.
+ *
+ * The common height is `opts.scale` pixels per cell of the taller map; both maps are shrunk
+ * together so that the picture stays at most 4000 pixels wide and the maps at most 4000 high.
+ * Deterministic.
+ * \throws InputError if `opts.scale` is outside 1..8 or a pair names a vertex that is not in
+ * its graph. */
+mrpt::img::CImage drawMatch(const mrpt::maps::COccupancyGridMap2D& gt_grid, const TopologyGraph& gt,
+                            const mrpt::maps::COccupancyGridMap2D& map_grid,
+                            const TopologyGraph& map, const GraphMatch& match,
+                            const DrawOptions& opts = {});
 
 }  // namespace mrpt_topoeval

@@ -226,8 +226,7 @@ std::vector<Isomorphism> findIsomorphisms(MatchContext& ctx)
                 have_best = true;
             }
         }
-        if (!have_best || static_cast<int>(best.pairs.size()) < ctx.params.min_isomorphism_vertices)
-            continue;
+        if (!have_best || static_cast<int>(best.pairs.size()) < min_size) continue;
         Isomorphism iso;
         iso.pairs = best.pairs;
         iso.similarity_sum = best.similarity_sum;

@@ -1,0 +1,56 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt_topoeval/GraphMatch.h>
+#include <mrpt_topoeval/QualityReport.h>
+#include <mrpt_topoeval/TopologyGraph.h>
+
+#include <string>
+
+namespace mrpt_topoeval
+{
+struct Parameters;
+
+/** Parameters of the map attributes and scores (paper IV), INI section `[QualityEvaluator]`. */
+struct QualityParameters : public mrpt::config::CLoadableOptions
+{
+    /** Local consistency classes by shortest graph distance: short < this [m] ... */
+    double consistency_short_max_m = 3.0;
+    /** ... medium < this <= long [m]. */
+    double consistency_medium_max_m = 9.0;
+    /** A brokenness group grows while its mean squared alignment error stays at or below
+     * this [m^2] (paper: SquaredErrorThreshold). */
+    double brokenness_max_squared_error_m2 = 0.2;
+    /** Groups smaller than this are not counted (paper: MinNumberVertices = 5) [1]. */
+    int brokenness_min_vertices = 5;
+    /** Accuracy score = 1 / (1 + rmse / this) [m]. */
+    double accuracy_scale_m = 0.5;
+    /** Consistency score = 1 / (1 + mean error / this) [m]. */
+    double consistency_scale_m = 0.25;
+    /** Weights of the scores in `quality` [1]. */
+    double weight_coverage = 1.0;
+    double weight_relative_accuracy = 1.0;
+    double weight_consistency = 1.0;
+    double weight_brokenness = 1.0;
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+    /** \throws InputError naming the field and value. */
+    void validate() const;
+};
+
+/** Paper IV: coverage, global and relative accuracy (Horn's closed form in double precision on
+ * centred points), local consistency per class of graph distance, brokenness groups, and one
+ * quality score, from a match of the ground truth's graph with the map's. */
+QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGraph& map,
+                            const GraphMatch& match, const QualityParameters& params = {});
+
+/** The one-call pipeline: both graphs, vertex similarity (attributes or ICP as configured),
+ * match, evaluation. Graphs are returned through the pointers if given. */
+QualityReport evaluate(const mrpt::maps::COccupancyGridMap2D& ground_truth,
+                       const mrpt::maps::COccupancyGridMap2D& map, const Parameters& params,
+                       TopologyGraph* gt_graph = nullptr, TopologyGraph* map_graph = nullptr);
+
+}  // namespace mrpt_topoeval

@@ -1,0 +1,78 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+#include <mrpt_topoeval/GraphMatch.h>
+
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mrpt_topoeval
+{
+/** A rigid 2D transform taking map coordinates into the ground truth's frame (T_gt_map). */
+struct Transform2D
+{
+    double x_m = 0.0, y_m = 0.0, yaw_deg = 0.0;
+    Eigen::Vector2d apply(const Eigen::Vector2d& p) const;
+};
+
+/** Position error of matched vertices (paper IV: global and relative accuracy). */
+struct Accuracy
+{
+    std::size_t pairs = 0;
+    double rmse_m = 0.0;    //!< Root mean square distance of matched vertices [m].
+    double score = 0.0;     //!< In [0, 1], 1 = exact (doc/quality.md).
+    Transform2D transform;  //!< Relative accuracy only: the best rigid alignment (Horn).
+};
+
+/** One class of local consistency (paper IV): ground-truth vertex pairs grouped by their
+ * shortest graph distance. */
+struct ConsistencyClass
+{
+    std::string name;                                               //!< "short", "medium", "long"
+    double min_graph_distance_m = 0.0, max_graph_distance_m = 0.0;  //!< [min, max)
+    std::size_t pairs = 0;
+    double mean_error_m = 0.0;  //!< Mean |d_gt - d_map| of the pairs' geometric distances [m].
+    double score = 0.0;         //!< In [0, 1] (doc/quality.md); 0 when the class is empty.
+};
+
+/** A brokenness group (paper IV, Table III): connected matched vertices that one rigid
+ * transform aligns with the ground truth. */
+struct BrokennessGroup
+{
+    std::vector<int> gt_vertices;   //!< Ground-truth vertex ids, in the order they joined.
+    double squared_error_m2 = 0.0;  //!< Mean squared alignment error [m^2].
+    Transform2D transform;          //!< The group's T_gt_map.
+};
+
+/** Brokenness (paper IV): how many locally consistent parts are misplaced against each other. */
+struct Brokenness
+{
+    int degree = 0;  //!< Accepted groups - 1 (0 when there is at most one group).
+    std::vector<BrokennessGroup> groups;  //!< Accepted groups, largest first.
+    double score = 0.0;                   //!< 1 / (1 + degree); 0 when nothing matched.
+};
+
+/** Everything `compare` reports. Plain data; text and JSON in QualityReport.cpp / report_json. */
+struct QualityReport
+{
+    std::size_t gt_vertices = 0;   //!< Matchable (non-spurious) ground-truth vertices.
+    std::size_t map_vertices = 0;  //!< Matchable map vertices.
+    GraphMatch match;
+    double coverage = 0.0;  //!< Matched share of the matchable ground-truth vertices [0, 1].
+    Accuracy global_accuracy;
+    Accuracy relative_accuracy;
+    std::vector<ConsistencyClass> local_consistency;  //!< short, medium, long
+    Brokenness brokenness;
+    double quality = 0.0;  //!< Weighted combination of the scores [0, 1] (doc/quality.md).
+    std::vector<std::string> messages;
+    std::map<std::string, double> timing_ms;
+
+    /** A few lines, like Ceres' brief report. */
+    std::string briefReport() const;
+    /** Every figure, group and class. */
+    std::string fullReport() const;
+};
+
+}  // namespace mrpt_topoeval

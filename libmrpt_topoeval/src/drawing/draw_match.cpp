@@ -1,0 +1,189 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// The picture of a match (paper Fig. 5 and 7): both maps side by side, match lines between them.
+
+#include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/errors.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+#include <string>
+#include <vector>
+
+#include "internal/MatchView.h"
+#include "internal/graph_drawing.h"
+
+namespace mrpt_topoeval
+{
+namespace
+{
+using internal::kShift;
+using internal::kSubPixel;
+using Grid = mrpt::maps::COccupancyGridMap2D;
+
+// As in the paper's Fig. 7: green for the isomorphism's matches, red for neighbour growing.
+const cv::Scalar kIsomorphismLine(0, 190, 0);
+const cv::Scalar kGrowingLine(0, 0, 235);
+const cv::Scalar kMissingRing(200, 0, 200);  // magenta: no graph colour uses it
+
+// Limits that keep the picture viewable and its PNG small (the issue asks for ~4000 px).
+constexpr double kMaxWidthPx = 4000.0;
+constexpr double kMaxMapHeightPx = 4000.0;
+constexpr int kMarginPx = 6;
+constexpr int kGapPx = 24;  // between the two maps, so lines leaving the left map stay visible
+constexpr int kTitleHeightPx = 24;
+constexpr double kTitleFontScale = 0.5;
+
+/** One of the two maps as drawn: its picture, where it sits, how to find its vertices. */
+struct Panel
+{
+    cv::Mat img;
+    cv::Point origin;  // top-left corner in the whole picture
+    internal::PixelMapper px;
+    internal::GraphStyle style;
+
+    cv::Point fixedPoint(const Eigen::Vector2d& p) const
+    {
+        const cv::Point2d q = px.toPixel(p);
+        return {static_cast<int>(std::lround((q.x + origin.x) * kSubPixel)),
+                static_cast<int>(std::lround((q.y + origin.y) * kSubPixel))};
+    }
+};
+
+/** Rows and columns of a grid, at least 1 each, so ratios are defined for empty grids. */
+double rowsOf(const Grid& g) { return std::max<double>(1.0, static_cast<double>(g.getSizeY())); }
+double colsOf(const Grid& g) { return std::max<double>(1.0, static_cast<double>(g.getSizeX())); }
+
+/** `text` shortened from the left ("...tail") until it fits `max_width_px`. */
+std::string fitText(const std::string& text, int max_width_px)
+{
+    const auto width = [](const std::string& t)
+    {
+        int base = 0;
+        return cv::getTextSize(t, cv::FONT_HERSHEY_SIMPLEX, kTitleFontScale, 1, &base).width;
+    };
+    if (width(text) <= max_width_px) return text;
+    for (std::size_t cut = 1; cut < text.size(); ++cut)
+    {
+        const std::string t = "..." + text.substr(cut);
+        if (width(t) <= max_width_px) return t;
+    }
+    return "";
+}
+
+std::string title(const char* role, const std::string& file)
+{
+    // The file name alone: the folders rarely tell two maps apart and cost the most width.
+    const std::string name = std::filesystem::path(file).filename().string();
+    return name.empty() ? std::string(role) : std::string(role) + ": " + name;
+}
+
+void checkPairs(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& match)
+{
+    for (std::size_t i = 0; i < match.pairs.size(); ++i)
+    {
+        const VertexPair& p = match.pairs[i];
+        const auto bad = [&](const char* side, int id, std::size_t n)
+        {
+            throw InputError("drawMatch: pair " + std::to_string(i) + " names " + side +
+                             " vertex " + std::to_string(id) + ", but that graph has " +
+                             std::to_string(n) + " vertices");
+        };
+        if (p.ground_truth < 0 || static_cast<std::size_t>(p.ground_truth) >= gt.vertices.size())
+            bad("ground-truth", p.ground_truth, gt.vertices.size());
+        if (p.map < 0 || static_cast<std::size_t>(p.map) >= map.vertices.size())
+            bad("map", p.map, map.vertices.size());
+    }
+}
+}  // namespace
+
+mrpt::img::CImage drawMatch(const Grid& gt_grid, const TopologyGraph& gt, const Grid& map_grid,
+                            const TopologyGraph& map, const GraphMatch& match,
+                            const DrawOptions& opts)
+{
+    if (opts.scale < 1 || opts.scale > 8)
+        throw InputError("DrawOptions::scale = " + std::to_string(opts.scale) +
+                         " violates 1 <= scale <= 8");
+    checkPairs(gt, map, match);
+
+    // Common height (paper Fig. 5: both maps equally tall): `scale` pixels per cell of the
+    // taller map, reduced until both maps side by side fit the width limit.
+    const double widths_per_height =
+        colsOf(gt_grid) / rowsOf(gt_grid) + colsOf(map_grid) / rowsOf(map_grid);
+    double height = opts.scale * std::max(rowsOf(gt_grid), rowsOf(map_grid));
+    height = std::min(height, kMaxMapHeightPx);
+    height = std::min(height, (kMaxWidthPx - 2 * kMarginPx - kGapPx) / widths_per_height);
+    height = std::max(height, 1.0);  // absurdly wide maps: 1 pixel high rather than nothing
+
+    std::vector<Panel> panels;
+    for (const auto& [grid, graph] :
+         {std::pair<const Grid*, const TopologyGraph*>{&gt_grid, &gt},
+          std::pair<const Grid*, const TopologyGraph*>{&map_grid, &map}})
+    {
+        const double px_per_cell = height / rowsOf(*grid);
+        panels.push_back({internal::drawGraphOverGrid(*grid, *graph, px_per_cell, opts.draw_ids,
+                                                      opts.draw_boundary),
+                          {},
+                          internal::PixelMapper(*grid, px_per_cell),
+                          internal::GraphStyle::forScale(px_per_cell)});
+    }
+    Panel& left = panels[0];
+    Panel& right = panels[1];
+    left.origin = {kMarginPx, kTitleHeightPx};
+    right.origin = {kMarginPx + left.img.cols + kGapPx, kTitleHeightPx};
+
+    const int width = right.origin.x + right.img.cols + kMarginPx;
+    const int maps_height = std::max(left.img.rows, right.img.rows);
+    cv::Mat canvas(kTitleHeightPx + maps_height, width, CV_8UC3, internal::kWhite);
+    for (const Panel& p : panels)
+        p.img.copyTo(canvas(cv::Rect(p.origin.x, p.origin.y, p.img.cols, p.img.rows)));
+
+    // Titles above each map; the left one may use the gap too.
+    const int baseline_y = kTitleHeightPx - 7;
+    cv::putText(canvas, fitText(title("ground truth", gt.map.file), left.img.cols + kGapPx - 4),
+                {left.origin.x, baseline_y}, cv::FONT_HERSHEY_SIMPLEX, kTitleFontScale,
+                internal::kTextColour, 1, cv::LINE_AA);
+    cv::putText(canvas, fitText(title("map", map.map.file), right.img.cols),
+                {right.origin.x, baseline_y}, cv::FONT_HERSHEY_SIMPLEX, kTitleFontScale,
+                internal::kTextColour, 1, cv::LINE_AA);
+
+    // Unmatched ground-truth vertices the matcher tried to match (those "missing" counts:
+    // non-spurious, with a non-spurious edge): a ring just outside the vertex mark.
+    const internal::MatchView gt_view = internal::makeMatchView(gt);
+    std::vector<bool> matched(gt.vertices.size(), false);
+    for (const VertexPair& p : match.pairs)
+        matched[static_cast<std::size_t>(p.ground_truth)] = true;
+    const int ring_radius = (left.style.vertex_radius_px + 3) << kShift;
+    for (std::size_t i = 0; i < gt.vertices.size(); ++i)
+        if (gt_view.v[i].active && !matched[i])
+            cv::circle(canvas, left.fixedPoint(gt.vertices[i].position_m), ring_radius,
+                       kMissingRing, 2, cv::LINE_AA, kShift);
+
+    // Match lines, isomorphism first so the rarer neighbour-growing lines stay on top.
+    for (const MatchStage stage : {MatchStage::Isomorphism, MatchStage::NeighbourGrowing})
+        for (const VertexPair& p : match.pairs)
+        {
+            if (p.stage != stage) continue;
+            const Eigen::Vector2d& a =
+                gt.vertices[static_cast<std::size_t>(p.ground_truth)].position_m;
+            const Eigen::Vector2d& b = map.vertices[static_cast<std::size_t>(p.map)].position_m;
+            cv::line(canvas, left.fixedPoint(a), right.fixedPoint(b),
+                     stage == MatchStage::Isomorphism ? kIsomorphismLine : kGrowingLine, 2,
+                     cv::LINE_AA, kShift);
+        }
+
+    // The counts of the paper's Table II on their own row, the graphs' colours below.
+    using Mark = internal::LegendEntry::Mark;
+    const std::vector<internal::LegendEntry> counts = {
+        {"isomorphism: " + std::to_string(match.isomorphism), kIsomorphismLine, Mark::Line},
+        {"neighbour growing: " + std::to_string(match.neighbour_growing), kGrowingLine, Mark::Line},
+        {"missing: " + std::to_string(match.missing), kMissingRing, Mark::Ring}};
+    const cv::Mat out = internal::stackVertically(
+        {canvas, internal::drawLegend(canvas.cols, counts),
+         internal::drawLegend(canvas.cols, internal::graphLegendEntries(opts.draw_boundary))});
+    return mrpt::img::CImage(out, mrpt::img::SHALLOW_COPY);
+}
+
+}  // namespace mrpt_topoeval

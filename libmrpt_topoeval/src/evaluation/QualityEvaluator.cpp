@@ -1,0 +1,366 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// Paper IV: map attributes from a match of two Topology Graphs, and the scores built on them.
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt_topoeval/GraphBuilder.h>
+#include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/Parameters.h>
+#include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/errors.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <sstream>
+
+#include "internal/MatchView.h"
+#include "internal/horn.h"
+
+namespace mrpt_topoeval
+{
+// ---------------------------------------------------------------- parameters
+void QualityParameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                           const std::string& s)
+{
+    MRPT_LOAD_CONFIG_VAR(consistency_short_max_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(consistency_medium_max_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(brokenness_max_squared_error_m2, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(brokenness_min_vertices, int, c, s);
+    MRPT_LOAD_CONFIG_VAR(accuracy_scale_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(consistency_scale_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(weight_coverage, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(weight_relative_accuracy, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(weight_consistency, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(weight_brokenness, double, c, s);
+}
+
+void QualityParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                         const std::string& s) const
+{
+    MRPT_SAVE_CONFIG_VAR_COMMENT(consistency_short_max_m,
+                                 "[m] local consistency: short pairs have graph distance < this");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(consistency_medium_max_m, "[m] ... medium < this <= long");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_max_squared_error_m2,
+                                 "[m^2] a brokenness group's largest mean squared error");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_min_vertices,
+                                 "[1] smallest brokenness group counted (paper: 5)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(accuracy_scale_m, "[m] accuracy score = 1 / (1 + rmse / this)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(consistency_scale_m,
+                                 "[m] consistency score = 1 / (1 + mean error / this)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(weight_coverage, "[1] weight of coverage in quality");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(weight_relative_accuracy,
+                                 "[1] weight of the relative accuracy score in quality");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(weight_consistency,
+                                 "[1] weight of the mean local consistency score in quality");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(weight_brokenness,
+                                 "[1] weight of the brokenness score in quality");
+}
+
+namespace
+{
+template <class T>
+void require(bool ok, const char* name, T value, const char* rule)
+{
+    if (ok) return;
+    std::ostringstream os;
+    os << name << " = " << value << " violates " << rule;
+    throw InputError(os.str());
+}
+bool positive(double v) { return std::isfinite(v) && v > 0.0; }
+bool nonneg(double v) { return std::isfinite(v) && v >= 0.0; }
+}  // namespace
+
+void QualityParameters::validate() const
+{
+    require(positive(consistency_short_max_m), "consistency_short_max_m", consistency_short_max_m,
+            "consistency_short_max_m > 0");
+    require(std::isfinite(consistency_medium_max_m) &&
+                consistency_medium_max_m > consistency_short_max_m,
+            "consistency_medium_max_m", consistency_medium_max_m,
+            "consistency_medium_max_m > consistency_short_max_m");
+    require(positive(brokenness_max_squared_error_m2), "brokenness_max_squared_error_m2",
+            brokenness_max_squared_error_m2, "brokenness_max_squared_error_m2 > 0");
+    require(brokenness_min_vertices >= 2, "brokenness_min_vertices", brokenness_min_vertices,
+            "brokenness_min_vertices >= 2");
+    require(positive(accuracy_scale_m), "accuracy_scale_m", accuracy_scale_m,
+            "accuracy_scale_m > 0");
+    require(positive(consistency_scale_m), "consistency_scale_m", consistency_scale_m,
+            "consistency_scale_m > 0");
+    require(nonneg(weight_coverage), "weight_coverage", weight_coverage, "weight_coverage >= 0");
+    require(nonneg(weight_relative_accuracy), "weight_relative_accuracy", weight_relative_accuracy,
+            "weight_relative_accuracy >= 0");
+    require(nonneg(weight_consistency), "weight_consistency", weight_consistency,
+            "weight_consistency >= 0");
+    require(nonneg(weight_brokenness), "weight_brokenness", weight_brokenness,
+            "weight_brokenness >= 0");
+    require(
+        weight_coverage + weight_relative_accuracy + weight_consistency + weight_brokenness > 0.0,
+        "weight_coverage", weight_coverage, "at least one weight > 0");
+}
+
+// ---------------------------------------------------------------- attributes
+namespace
+{
+double invScore(double error, double scale) { return 1.0 / (1.0 + error / scale); }
+
+// Shortest path lengths along the graph's edges from `src` to every vertex (Dijkstra).
+std::vector<double> graphDistances(const TopologyGraph& g, int src)
+{
+    std::vector<double> d(g.vertices.size(), std::numeric_limits<double>::infinity());
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+    d[src] = 0.0;
+    q.emplace(0.0, src);
+    while (!q.empty())
+    {
+        const auto [du, u] = q.top();
+        q.pop();
+        if (du > d[u]) continue;
+        for (const Incidence& inc : g.vertices[u].ring)
+        {
+            const double nd = du + g.edges[inc.edge].length_m;
+            if (nd < d[inc.other_vertex])
+            {
+                d[inc.other_vertex] = nd;
+                q.emplace(nd, inc.other_vertex);
+            }
+        }
+    }
+    return d;
+}
+
+// Paper IV, local consistency: all pairs of matched ground-truth vertices, grouped by their
+// shortest graph distance; in each class the mean difference between the pair's geometric
+// distance in the ground truth and in the map.
+std::vector<ConsistencyClass> localConsistency(const TopologyGraph& gt, const TopologyGraph& map,
+                                               const GraphMatch& m, const QualityParameters& p)
+{
+    std::vector<ConsistencyClass> cls = {
+        {"short", 0.0, p.consistency_short_max_m, 0, 0.0, 0.0},
+        {"medium", p.consistency_short_max_m, p.consistency_medium_max_m, 0, 0.0, 0.0},
+        {"long", p.consistency_medium_max_m, std::numeric_limits<double>::infinity(), 0, 0.0, 0.0}};
+    for (std::size_t i = 0; i < m.pairs.size(); ++i)
+    {
+        const std::vector<double> dist = graphDistances(gt, m.pairs[i].ground_truth);
+        for (std::size_t j = i + 1; j < m.pairs.size(); ++j)
+        {
+            const double dg = dist[m.pairs[j].ground_truth];
+            if (!std::isfinite(dg)) continue;
+            const double d_gt = (gt.vertices[m.pairs[i].ground_truth].position_m -
+                                 gt.vertices[m.pairs[j].ground_truth].position_m)
+                                    .norm();
+            const double d_map =
+                (map.vertices[m.pairs[i].map].position_m - map.vertices[m.pairs[j].map].position_m)
+                    .norm();
+            ConsistencyClass& c = dg < p.consistency_short_max_m    ? cls[0]
+                                  : dg < p.consistency_medium_max_m ? cls[1]
+                                                                    : cls[2];
+            ++c.pairs;
+            c.mean_error_m += std::abs(d_gt - d_map);
+        }
+    }
+    for (auto& c : cls)
+        if (c.pairs > 0)
+        {
+            c.mean_error_m /= double(c.pairs);
+            c.score = invScore(c.mean_error_m, p.consistency_scale_m);
+        }
+    return cls;
+}
+
+// Paper IV, brokenness: grow groups of connected matched vertices by wavefront while their
+// Horn alignment's mean squared error stays under the threshold; keep groups of at least the
+// minimum size; the degree is the number of groups minus one.
+Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& m,
+                      const QualityParameters& p)
+{
+    Brokenness b;
+    if (m.pairs.empty()) return b;
+    const internal::MatchView view = internal::makeMatchView(gt);
+    std::vector<int> partner(gt.vertices.size(), -1), iso(gt.vertices.size(), -1);
+    for (const auto& pr : m.pairs)
+    {
+        partner[pr.ground_truth] = pr.map;
+        iso[pr.ground_truth] = pr.isomorphism;
+    }
+    // Neighbours in the ground truth, directly or through one unmatched vertex (as neighbour
+    // growing links them).
+    auto neighbours = [&](int v)
+    {
+        std::vector<int> out;
+        for (const auto& inc : view.v[v].ring)
+        {
+            if (partner[inc.other] >= 0)
+                out.push_back(inc.other);
+            else
+                for (const auto& inc2 : view.v[inc.other].ring)
+                    if (inc2.other != v && partner[inc2.other] >= 0) out.push_back(inc2.other);
+        }
+        return out;
+    };
+    // Seeds: vertices of the biggest isomorphisms first, then by id.
+    std::vector<std::size_t> iso_size(m.isomorphism_sizes.begin(), m.isomorphism_sizes.end());
+    std::vector<int> seeds;
+    for (const auto& pr : m.pairs) seeds.push_back(pr.ground_truth);
+    std::stable_sort(seeds.begin(), seeds.end(),
+                     [&](int x, int y)
+                     {
+                         const std::size_t sx =
+                             iso[x] >= 0 && iso[x] < int(iso_size.size()) ? iso_size[iso[x]] : 0;
+                         const std::size_t sy =
+                             iso[y] >= 0 && iso[y] < int(iso_size.size()) ? iso_size[iso[y]] : 0;
+                         return sx > sy;
+                     });
+
+    std::vector<char> taken(gt.vertices.size(), 0), seeded(gt.vertices.size(), 0);
+    for (int seed : seeds)
+    {
+        if (taken[seed] || seeded[seed]) continue;
+        seeded[seed] = 1;
+        BrokennessGroup grp;
+        std::vector<Eigen::Vector2d> pg, pm;
+        std::vector<char> in(gt.vertices.size(), 0);
+        std::queue<int> wave;
+        auto tryAdd = [&](int v)
+        {
+            pg.push_back(gt.vertices[v].position_m);
+            pm.push_back(map.vertices[partner[v]].position_m);
+            double mse = 0.0;
+            internal::hornAlign(pg, pm, &mse);
+            if (mse <= p.brokenness_max_squared_error_m2)
+            {
+                grp.gt_vertices.push_back(v);
+                in[v] = 1;
+                wave.push(v);
+                return true;
+            }
+            pg.pop_back();
+            pm.pop_back();
+            return false;
+        };
+        tryAdd(seed);
+        while (!wave.empty())
+        {
+            const int v = wave.front();
+            wave.pop();
+            for (int n : neighbours(v))
+                if (!taken[n] && !in[n]) tryAdd(n);
+        }
+        if (static_cast<int>(grp.gt_vertices.size()) < p.brokenness_min_vertices) continue;
+        grp.transform = internal::hornAlign(pg, pm, &grp.squared_error_m2);
+        for (int v : grp.gt_vertices)
+        {
+            taken[v] = 1;
+            seeded[v] = 1;
+        }
+        b.groups.push_back(std::move(grp));
+    }
+    std::stable_sort(b.groups.begin(), b.groups.end(),
+                     [](const auto& x, const auto& y)
+                     { return x.gt_vertices.size() > y.gt_vertices.size(); });
+    b.degree = std::max(0, static_cast<int>(b.groups.size()) - 1);
+    b.score = 1.0 / (1.0 + b.degree);
+    return b;
+}
+}  // namespace
+
+QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGraph& map,
+                            const GraphMatch& match, const QualityParameters& p)
+{
+    p.validate();
+    QualityReport r;
+    r.match = match;
+    r.gt_vertices = static_cast<std::size_t>(internal::makeMatchView(ground_truth).numActive());
+    r.map_vertices = static_cast<std::size_t>(internal::makeMatchView(map).numActive());
+    r.local_consistency = localConsistency(ground_truth, map, match, p);
+    r.messages = match.messages;
+    if (match.pairs.empty())
+    {
+        r.messages.push_back("nothing was matched: coverage and quality are 0");
+        return r;
+    }
+    for (const auto& pr : match.pairs)
+        if (pr.ground_truth < 0 || pr.ground_truth >= int(ground_truth.vertices.size()) ||
+            pr.map < 0 || pr.map >= int(map.vertices.size()))
+            throw InputError("the match names a vertex the graphs do not have");
+
+    // Coverage (paper IV): share of the ground truth's matchable vertices that were matched.
+    r.coverage = r.gt_vertices ? double(match.pairs.size()) / double(r.gt_vertices) : 0.0;
+
+    std::vector<Eigen::Vector2d> pg, pm;
+    for (const auto& pr : match.pairs)
+    {
+        pg.push_back(ground_truth.vertices[pr.ground_truth].position_m);
+        pm.push_back(map.vertices[pr.map].position_m);
+    }
+    // Global accuracy: positions compared as they are, in the ground truth's frame.
+    double sum = 0.0;
+    for (std::size_t i = 0; i < pg.size(); ++i) sum += (pg[i] - pm[i]).squaredNorm();
+    r.global_accuracy.pairs = pg.size();
+    r.global_accuracy.rmse_m = std::sqrt(sum / double(pg.size()));
+    r.global_accuracy.score = invScore(r.global_accuracy.rmse_m, p.accuracy_scale_m);
+    // Relative accuracy: after the best rigid alignment (Horn).
+    double mse = 0.0;
+    r.relative_accuracy.pairs = pg.size();
+    r.relative_accuracy.transform = internal::hornAlign(pg, pm, &mse);
+    r.relative_accuracy.rmse_m = std::sqrt(mse);
+    r.relative_accuracy.score = invScore(r.relative_accuracy.rmse_m, p.accuracy_scale_m);
+
+    r.brokenness = brokenness(ground_truth, map, match, p);
+
+    // Quality: weighted mean of coverage, relative accuracy, the mean of the non-empty
+    // consistency classes, and brokenness (doc/quality.md).
+    double csum = 0.0;
+    int cn = 0;
+    for (const auto& c : r.local_consistency)
+        if (c.pairs > 0)
+        {
+            csum += c.score;
+            ++cn;
+        }
+    const double consistency = cn ? csum / cn : 0.0;
+    const double wsum =
+        p.weight_coverage + p.weight_relative_accuracy + p.weight_consistency + p.weight_brokenness;
+    r.quality =
+        (p.weight_coverage * r.coverage + p.weight_relative_accuracy * r.relative_accuracy.score +
+         p.weight_consistency * consistency + p.weight_brokenness * r.brokenness.score) /
+        wsum;
+    return r;
+}
+
+QualityReport evaluate(const mrpt::maps::COccupancyGridMap2D& gt_grid,
+                       const mrpt::maps::COccupancyGridMap2D& map_grid, const Parameters& params,
+                       TopologyGraph* gt_out, TopologyGraph* map_out)
+{
+    using Clock = std::chrono::steady_clock;
+    auto since = [](Clock::time_point t)
+    { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); };
+    const auto t0 = Clock::now();
+    TopologyGraph gt = buildTopologyGraph(gt_grid, params.graph);
+    TopologyGraph map = buildTopologyGraph(map_grid, params.graph);
+    const double t_graphs = since(t0);
+    const auto t1 = Clock::now();
+    const SimilarityMatrix s = params.similarity.mode == SimilarityMode::Icp
+                                   ? icpSimilarity(gt, gt_grid, map, map_grid, params.similarity)
+                                   : attributeSimilarity(gt, map, params.similarity);
+    const double t_sim = since(t1);
+    const auto t2 = Clock::now();
+    const GraphMatch match = matchGraphs(gt, map, s, params.matcher);
+    const double t_match = since(t2);
+    const auto t3 = Clock::now();
+    QualityReport r = evaluateMatch(gt, map, match, params.quality);
+    r.timing_ms["graphs"] = t_graphs;
+    r.timing_ms["similarity"] = t_sim;
+    r.timing_ms["match"] = t_match;
+    r.timing_ms["evaluation"] = since(t3);
+    r.timing_ms["total"] = since(t0);
+    for (const auto& w : gt.warnings) r.messages.push_back("ground truth: " + w);
+    for (const auto& w : map.warnings) r.messages.push_back("map: " + w);
+    if (gt_out) *gt_out = std::move(gt);
+    if (map_out) *map_out = std::move(map);
+    return r;
+}
+
+}  // namespace mrpt_topoeval

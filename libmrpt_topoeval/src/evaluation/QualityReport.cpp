@@ -1,0 +1,81 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#include <mrpt_topoeval/QualityReport.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace mrpt_topoeval
+{
+namespace
+{
+std::string fmt(const char* f, double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), f, v);
+    return buf;
+}
+
+std::string consistencyLine(const QualityReport& r)
+{
+    std::string s;
+    for (const auto& c : r.local_consistency)
+        s += "  " + c.name + " " + (c.pairs ? fmt("%.2f", c.score) : std::string("-"));
+    return s;
+}
+}  // namespace
+
+std::string QualityReport::briefReport() const
+{
+    std::string s;
+    s += "quality     " + fmt("%.3f", quality) + "\n";
+    s += "coverage    " + fmt("%.3f", coverage) + "  (" + std::to_string(match.pairs.size()) +
+         " of " + std::to_string(gt_vertices) +
+         " ground-truth vertices matched: " + std::to_string(match.isomorphism) + " isomorphism, " +
+         std::to_string(match.neighbour_growing) + " neighbour growing)\n";
+    s += "accuracy    relative " + fmt("%.3f", relative_accuracy.rmse_m) + " m rmse (score " +
+         fmt("%.2f", relative_accuracy.score) + "), global " + fmt("%.3f", global_accuracy.rmse_m) +
+         " m rmse\n";
+    s += "consistency" + consistencyLine(*this) + "\n";
+    s += "brokenness  " + std::to_string(brokenness.degree) + " (" +
+         std::to_string(brokenness.groups.size()) + " groups)\n";
+    return s;
+}
+
+std::string QualityReport::fullReport() const
+{
+    std::string s = briefReport();
+    s += "\nvertices    ground truth " + std::to_string(gt_vertices) + ", map " +
+         std::to_string(map_vertices) + " (matchable)\n";
+    s += "isomorphisms";
+    for (auto n : match.isomorphism_sizes) s += " " + std::to_string(n);
+    s += "\n";
+    const Transform2D& t = relative_accuracy.transform;
+    s += "alignment   T_gt_map: x " + fmt("%.3f", t.x_m) + " m, y " + fmt("%.3f", t.y_m) +
+         " m, yaw " + fmt("%.2f", t.yaw_deg) + " deg\n";
+    s += "consistency class   graph distance      pairs   mean error   score\n";
+    for (const auto& c : local_consistency)
+    {
+        char line[160];
+        std::snprintf(line, sizeof(line), "            %-7s %6.1f .. %-8s %7zu   %8.3f m   %5.2f\n",
+                      c.name.c_str(), c.min_graph_distance_m,
+                      std::isfinite(c.max_graph_distance_m)
+                          ? fmt("%.1f m", c.max_graph_distance_m).c_str()
+                          : "inf",
+                      c.pairs, c.mean_error_m, c.score);
+        s += line;
+    }
+    s += "brokenness  group  vertices  squared error   yaw\n";
+    for (std::size_t i = 0; i < brokenness.groups.size(); ++i)
+    {
+        const auto& g = brokenness.groups[i];
+        char line[160];
+        std::snprintf(line, sizeof(line), "            %5zu  %8zu  %9.3f m^2  %6.1f deg\n", i,
+                      g.gt_vertices.size(), g.squared_error_m2, g.transform.yaw_deg);
+        s += line;
+    }
+    for (const auto& m : messages) s += "note        " + m + "\n";
+    return s;
+}
+
+}  // namespace mrpt_topoeval

@@ -1,0 +1,57 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#include "internal/horn.h"
+
+#include <cmath>
+
+namespace mrpt_topoeval
+{
+Eigen::Vector2d Transform2D::apply(const Eigen::Vector2d& p) const
+{
+    const double a = yaw_deg * M_PI / 180.0;
+    return {x_m + std::cos(a) * p.x() - std::sin(a) * p.y(),
+            y_m + std::sin(a) * p.x() + std::cos(a) * p.y()};
+}
+
+namespace internal
+{
+Transform2D hornAlign(const std::vector<Eigen::Vector2d>& gt,
+                      const std::vector<Eigen::Vector2d>& map, double* mse)
+{
+    const std::size_t n = gt.size();
+    Transform2D t;
+    if (n == 0)
+    {
+        if (mse) *mse = 0.0;
+        return t;
+    }
+    Eigen::Vector2d cg = Eigen::Vector2d::Zero(), cm = Eigen::Vector2d::Zero();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        cg += gt[i];
+        cm += map[i];
+    }
+    cg /= double(n);
+    cm /= double(n);
+    // theta = atan2(sum m' x g', sum m' . g') on centred points.
+    double sc = 0.0, ss = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const Eigen::Vector2d g = gt[i] - cg, m = map[i] - cm;
+        sc += m.dot(g);
+        ss += m.x() * g.y() - m.y() * g.x();
+    }
+    const double theta = (n >= 2 && (sc != 0.0 || ss != 0.0)) ? std::atan2(ss, sc) : 0.0;
+    const double c = std::cos(theta), s = std::sin(theta);
+    t.yaw_deg = theta * 180.0 / M_PI;
+    t.x_m = cg.x() - (c * cm.x() - s * cm.y());
+    t.y_m = cg.y() - (s * cm.x() + c * cm.y());
+    if (mse)
+    {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < n; ++i) sum += (gt[i] - t.apply(map[i])).squaredNorm();
+        *mse = sum / double(n);
+    }
+    return t;
+}
+}  // namespace internal
+}  // namespace mrpt_topoeval
