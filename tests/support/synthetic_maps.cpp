@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 namespace mrpt_topoeval::testing
 {
@@ -257,6 +258,55 @@ COccupancyGridMap2D addSpeckleNoise(const COccupancyGridMap2D& src, double fract
                 dst.setCell(x, y, 1.0f);
         }
     return dst;
+}
+
+COccupancyGridMap2D makeCampusMap(std::uint32_t seed, double res)
+{
+    std::mt19937 rng(seed);
+    auto uni = [&](double a, double b)
+    { return std::uniform_real_distribution<double>(a, b)(rng); };
+    // Corridor west and south edges: a fixed layout for seed 1, a layout of its own for others.
+    std::vector<double> xs = {1.0, 12.5, 21.0, 34.5, 47.0, 59.0};
+    std::vector<double> ys = {1.0, 10.0, 22.5, 33.0};
+    if (seed != 1)
+    {
+        for (std::size_t i = 1; i + 1 < xs.size(); ++i) xs[i] = xs[i - 1] + uni(7.5, 14.0);
+        xs.back() = std::min(59.0, xs[xs.size() - 2] + uni(7.5, 14.0));
+        for (std::size_t j = 1; j + 1 < ys.size(); ++j) ys[j] = ys[j - 1] + uni(7.5, 13.0);
+        ys.back() = std::min(33.0, ys[ys.size() - 2] + uni(7.5, 13.0));
+    }
+    const double w = 1.8, wall = 0.2;
+    GridSketch s(62.0, 37.0, res);
+    for (double x : xs) s.carve(x, ys.front(), x + w, ys.back() + w);
+    for (double y : ys) s.carve(xs.front(), y, xs.back() + w, y + w);
+    // Rooms: split each block into a random number of rooms along its longer side, with a door
+    // of 0.9 m at a random position onto the south or north corridor.
+    for (std::size_t i = 0; i + 1 < xs.size(); ++i)
+        for (std::size_t j = 0; j + 1 < ys.size(); ++j)
+        {
+            const double bx0 = xs[i] + w + wall, bx1 = xs[i + 1] - wall;
+            const double by0 = ys[j] + w + wall, by1 = ys[j + 1] - wall;
+            double x = bx0;
+            while (bx1 - x > 2.5)
+            {
+                const double rw = std::min(bx1 - x, uni(2.5, 6.5));
+                const double x1 = (bx1 - (x + rw) < 2.5) ? bx1 : x + rw;
+                // Some rooms are split in two along y.
+                const bool split = (by1 - by0) > 7.0 && uni(0.0, 1.0) < 0.5;
+                const double ym = split ? uni(by0 + 3.0, by1 - 3.0) : by1;
+                s.carve(x, by0, x1, split ? ym - wall / 2 : by1);
+                const double d0 = uni(x + 0.3, x1 - 1.2);
+                s.carve(d0, by0 - wall, d0 + 0.9, by0);  // door south
+                if (split)
+                {
+                    s.carve(x, ym + wall / 2, x1, by1);
+                    const double d1 = uni(x + 0.3, x1 - 1.2);
+                    s.carve(d1, by1, d1 + 0.9, by1 + wall);  // door north
+                }
+                x = x1 + wall;
+            }
+        }
+    return s.grid();
 }
 
 COccupancyGridMap2D makeLargeBuilding(int cells, double res)

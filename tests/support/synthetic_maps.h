@@ -86,6 +86,12 @@ Eigen::Vector2d breakPoint(const Eigen::Vector2d& pivot, double yaw_rad,
 mrpt::maps::COccupancyGridMap2D addSpeckleNoise(const mrpt::maps::COccupancyGridMap2D& src,
                                                 double fraction, std::uint32_t seed);
 
+/** A big irregular floor, about 62 m x 38 m: corridors at uneven spacings form a network of
+ * loops; every block between them is split into rooms of seeded random sizes, each with a door
+ * at a random place on a corridor. Nothing repeats, so every part of it is recognisable (for
+ * brokenness and coverage tests). Deterministic for a seed. */
+mrpt::maps::COccupancyGridMap2D makeCampusMap(std::uint32_t seed = 1, double resolution_m = 0.05);
+
 /** A large synthetic building for benchmarks: a lattice of rooms on corridors filling a grid
  * of `cells` x `cells`. */
 mrpt::maps::COccupancyGridMap2D makeLargeBuilding(int cells, double resolution_m = 0.05);

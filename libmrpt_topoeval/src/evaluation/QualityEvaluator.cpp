@@ -248,6 +248,46 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map, const G
             for (int n : neighbours(v))
                 if (!taken[n] && !in[n]) tryAdd(n);
         }
+        // Refinement: greedy growth lets an early, small group accept vertices with a
+        // compromise transform (near a break both sides fit a little). Re-estimate the group's
+        // transform and collect again, from the seed, the connected vertices that this
+        // transform places within the threshold each; repeat until the group is stable.
+        for (int round = 0; round < 5 && grp.gt_vertices.size() >= 2; ++round)
+        {
+            const Transform2D t = internal::hornAlign(pg, pm);
+            auto fits = [&](int v)
+            {
+                return (gt.vertices[v].position_m - t.apply(map.vertices[partner[v]].position_m))
+                           .squaredNorm() <= p.brokenness_max_squared_error_m2;
+            };
+            std::vector<int> members;
+            std::vector<char> mark(gt.vertices.size(), 0);
+            std::queue<int> q;
+            if (!fits(seed)) break;
+            q.push(seed);
+            mark[seed] = 1;
+            while (!q.empty())
+            {
+                const int v = q.front();
+                q.pop();
+                members.push_back(v);
+                for (int n : neighbours(v))
+                    if (!taken[n] && !mark[n] && fits(n))
+                    {
+                        mark[n] = 1;
+                        q.push(n);
+                    }
+            }
+            if (members == grp.gt_vertices) break;
+            grp.gt_vertices = members;
+            pg.clear();
+            pm.clear();
+            for (int v : members)
+            {
+                pg.push_back(gt.vertices[v].position_m);
+                pm.push_back(map.vertices[partner[v]].position_m);
+            }
+        }
         if (static_cast<int>(grp.gt_vertices.size()) < p.brokenness_min_vertices) continue;
         grp.transform = internal::hornAlign(pg, pm, &grp.squared_error_m2);
         for (int v : grp.gt_vertices)
@@ -257,6 +297,87 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map, const G
         }
         b.groups.push_back(std::move(grp));
     }
+    // Brokenness counts parts misplaced against each other. Two groups whose transforms put
+    // their vertices in the same places (mean squared difference of T_i(q) and T_j(q) over
+    // both groups' map vertices within the threshold) are one part, split only by vertex noise
+    // or by unmatched vertices between them: merge them.
+    auto fitOf = [&](const std::vector<int>& vs, double* mse)
+    {
+        std::vector<Eigen::Vector2d> pg, pm;
+        for (int v : vs)
+        {
+            pg.push_back(gt.vertices[v].position_m);
+            pm.push_back(map.vertices[partner[v]].position_m);
+        }
+        return internal::hornAlign(pg, pm, mse);
+    };
+    auto placementGap = [&](const BrokennessGroup& x, const BrokennessGroup& y)
+    {
+        double sum = 0.0;
+        std::size_t n = 0;
+        for (const auto* g : {&x, &y})
+            for (int v : g->gt_vertices)
+            {
+                const Eigen::Vector2d q = map.vertices[partner[v]].position_m;
+                sum += (x.transform.apply(q) - y.transform.apply(q)).squaredNorm();
+                ++n;
+            }
+        return n ? sum / double(n) : 0.0;
+    };
+    for (bool merged = true; merged;)
+    {
+        merged = false;
+        for (std::size_t i = 0; i < b.groups.size() && !merged; ++i)
+            for (std::size_t j = i + 1; j < b.groups.size() && !merged; ++j)
+            {
+                if (placementGap(b.groups[i], b.groups[j]) > p.brokenness_max_squared_error_m2)
+                    continue;
+                std::vector<int> u = b.groups[i].gt_vertices;
+                u.insert(u.end(), b.groups[j].gt_vertices.begin(), b.groups[j].gt_vertices.end());
+                std::vector<Eigen::Vector2d> ug, um;
+                for (int v : u)
+                {
+                    ug.push_back(gt.vertices[v].position_m);
+                    um.push_back(map.vertices[partner[v]].position_m);
+                }
+                b.groups[i].transform = internal::hornAlign(ug, um, &b.groups[i].squared_error_m2);
+                b.groups[i].gt_vertices = std::move(u);
+                b.groups.erase(b.groups.begin() + static_cast<long>(j));
+                merged = true;
+            }
+    }
+    // A vertex that a bigger part's transform places within the threshold belongs to that
+    // part: near a break, leftovers of both sides plus a few wrong pairs can form a small group
+    // with a compromise rotation. Bigger groups take such members; what falls below the
+    // minimum size is no group.
+    std::stable_sort(b.groups.begin(), b.groups.end(),
+                     [](const auto& x, const auto& y)
+                     { return x.gt_vertices.size() > y.gt_vertices.size(); });
+    for (std::size_t j = 1; j < b.groups.size(); ++j)
+    {
+        std::vector<int> keep;
+        for (int v : b.groups[j].gt_vertices)
+        {
+            const Eigen::Vector2d q = map.vertices[partner[v]].position_m;
+            bool moved = false;
+            for (std::size_t i = 0; i < j && !moved; ++i)
+                if ((gt.vertices[v].position_m - b.groups[i].transform.apply(q)).squaredNorm() <=
+                    p.brokenness_max_squared_error_m2)
+                {
+                    b.groups[i].gt_vertices.push_back(v);
+                    moved = true;
+                }
+            if (!moved) keep.push_back(v);
+        }
+        b.groups[j].gt_vertices = std::move(keep);
+    }
+    b.groups.erase(std::remove_if(b.groups.begin(), b.groups.end(),
+                                  [&](const BrokennessGroup& g) {
+                                      return static_cast<int>(g.gt_vertices.size()) <
+                                             p.brokenness_min_vertices;
+                                  }),
+                   b.groups.end());
+    for (auto& g : b.groups) g.transform = fitOf(g.gt_vertices, &g.squared_error_m2);
     std::stable_sort(b.groups.begin(), b.groups.end(),
                      [](const auto& x, const auto& y)
                      { return x.gt_vertices.size() > y.gt_vertices.size(); });

@@ -12,6 +12,7 @@
 // Cost on the Intel lab pair (116 x 44 vertices, 2 cores): about 0.5 s (see README,
 // "Performance"), against "typically less than one minute" in the paper.
 
+#include <mrpt/core/cpu.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/maps/metric_map_types.h>
 #include <mrpt/poses/CPose2D.h>
@@ -439,6 +440,9 @@ SimilarityMatrix icpSimilarity(const TopologyGraph& a, const COccupancyGridMap2D
             failed = true;
         }
     };
+    // MRPT's CPU-feature singleton (read by se2_l2 in every ICP iteration) is created here,
+    // before the threads, so they only ever read it.
+    [[maybe_unused]] const bool sse2 = mrpt::cpu::supports(mrpt::cpu::feature::SSE2);
     if (n_threads <= 1)
         worker();
     else
