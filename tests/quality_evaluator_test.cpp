@@ -208,3 +208,37 @@ TEST(QualityEvaluator, InvalidParametersAreRejected)
     p.brokenness_max_squared_error_m2 = -0.1;
     EXPECT_THROW(p.validate(), InputError);
 }
+
+TEST(QualityEvaluator, RealIntelSlamScoresBelowTheReference)
+{
+    const auto iref = sharedDataFile("radish/intel-corrected_ref.yaml");
+    const auto islam = sharedDataFile("slam_maps/intel_icp-slam_app-final.yaml");
+    if (!iref || !islam) GTEST_SKIP() << "no ../shared/data";
+    const auto ir = loadMap(*iref).grid, is = loadMap(*islam).grid;
+    const QualityReport self = compare(ir, ir, "intel_self");
+    const QualityReport slam = compare(ir, is, "intel_slam");
+    EXPECT_DOUBLE_EQ(self.quality, 1.0);
+    EXPECT_EQ(self.brokenness.degree, 0);
+    EXPECT_LT(slam.quality, self.quality);
+}
+
+TEST(QualityEvaluator, RealHousePairsAreReportedWithoutNaN)
+{
+    // The house ground truth is a bare floor plan whose graph has 4 vertices; the robot maps are
+    // furnished, and differently in 2019 and 2020 (doc/quality.md reports the figures). What must
+    // hold: finite scores in [0, 1].
+    const auto gt = sharedDataFile("house/house_gt_trinary_res0.05.yaml");
+    const auto m2020 = sharedDataFile("house/map_6ccdcaa.yaml");
+    const auto m2019 = sharedDataFile("house/map_2333d24.yaml");
+    if (!gt || !m2020 || !m2019) GTEST_SKIP() << "no ../shared/data";
+    const auto g = loadMap(*gt).grid, a = loadMap(*m2020).grid, b = loadMap(*m2019).grid;
+    for (const QualityReport& r : {compare(g, a, "house_gt_2020"), compare(g, b, "house_gt_2019"),
+                                   compare(a, b, "house_2020_2019")})
+    {
+        EXPECT_TRUE(std::isfinite(r.quality));
+        EXPECT_GE(r.quality, 0.0);
+        EXPECT_LE(r.quality, 1.0);
+        EXPECT_GE(r.coverage, 0.0);
+        EXPECT_LE(r.coverage, 1.0);
+    }
+}
