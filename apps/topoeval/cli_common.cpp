@@ -47,7 +47,7 @@ void printError(const std::string& msg)
 
 std::string versionLine()
 {
-    return std::string("topoeval ") + TOPOEVAL_VERSION + " (MRPT " +
+    return std::string("topoeval ") + TOPOEVAL_VERSION + " (" +
            mrpt::system::MRPT_getVersion() + ")";
 }
 

@@ -9,9 +9,10 @@
 namespace mrpt_topoeval
 {
 /** The graph as JSON (the format of `topoeval graph --json`, documented in doc/cli.md):
- * `{"map": {...}, "vertices": [...], "edges": [...], "timing_ms": {...}}`, coordinates in
- * metres in the map's world frame. Byte-identical for the same graph, apart from the
- * `timing_ms` object (omitted when `stats` is null). NaN and infinities are written as null. */
+ * `{"map", "summary", "vertices", "edges", "outer_boundary", "warnings", "build",
+ * "timing_ms"}`, coordinates in metres in the map's world frame. Byte-identical for the same
+ * graph, apart from the `timing_ms` object; `build` and `timing_ms` are omitted when `stats` is
+ * null. NaN and infinities are written as null. */
 std::string graphToJson(const TopologyGraph& graph, const GraphBuildStats* stats = nullptr);
 
 }  // namespace mrpt_topoeval
