@@ -21,7 +21,10 @@ TEST(AttributeSimilarity, SelfSimilarityIsOneAndRangeIsUnit)
     EXPECT_GE(s.minCoeff(), 0.0);
     EXPECT_LE(s.maxCoeff(), 1.0 + 1e-12);
     for (std::size_t i = 0; i < g.vertices.size(); ++i)
-        if (!g.vertices[i].spurious) EXPECT_NEAR(s(i, i), 1.0, 1e-12) << i;
+    {
+        if (g.vertices[i].spurious) continue;
+        EXPECT_NEAR(s(i, i), 1.0, 1e-12) << i;
+    }
 }
 
 TEST(AttributeSimilarity, IsRotationInvariantAndFindsTruePartners)

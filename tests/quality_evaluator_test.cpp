@@ -135,12 +135,12 @@ TEST(QualityEvaluator, BrokenOnceTwiceThrice)
         std::vector<double> expected = {0.0};
         double acc = 0.0;
         for (int k = 0; k < n; ++k) expected.push_back(-(acc += kBreaks[k].yaw_deg));
-        for (const auto& g : r.brokenness.groups)
+        for (const auto& grp : r.brokenness.groups)
         {
             double best = 1e9;
             for (double e : expected)
-                best = std::min(best, std::abs(std::remainder(g.transform.yaw_deg - e, 360.0)));
-            EXPECT_LE(best, 3.0) << "broken " << n << ": group yaw " << g.transform.yaw_deg;
+                best = std::min(best, std::abs(std::remainder(grp.transform.yaw_deg - e, 360.0)));
+            EXPECT_LE(best, 3.0) << "broken " << n << ": group yaw " << grp.transform.yaw_deg;
         }
     }
 }

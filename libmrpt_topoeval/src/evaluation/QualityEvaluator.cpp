@@ -17,6 +17,7 @@
 
 #include "internal/MatchView.h"
 #include "internal/horn.h"
+#include "internal/validation.h"
 
 namespace mrpt_topoeval
 {
@@ -58,44 +59,32 @@ void QualityParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                  "[1] weight of the brokenness score in quality");
 }
 
-namespace
-{
-template <class T>
-void require(bool ok, const char* name, T value, const char* rule)
-{
-    if (ok) return;
-    std::ostringstream os;
-    os << name << " = " << value << " violates " << rule;
-    throw InputError(os.str());
-}
-bool positive(double v) { return std::isfinite(v) && v > 0.0; }
-bool nonneg(double v) { return std::isfinite(v) && v >= 0.0; }
-}  // namespace
-
 void QualityParameters::validate() const
 {
-    require(positive(consistency_short_max_m), "consistency_short_max_m", consistency_short_max_m,
-            "consistency_short_max_m > 0");
-    require(std::isfinite(consistency_medium_max_m) &&
-                consistency_medium_max_m > consistency_short_max_m,
-            "consistency_medium_max_m", consistency_medium_max_m,
-            "consistency_medium_max_m > consistency_short_max_m");
-    require(positive(brokenness_max_squared_error_m2), "brokenness_max_squared_error_m2",
-            brokenness_max_squared_error_m2, "brokenness_max_squared_error_m2 > 0");
-    require(brokenness_min_vertices >= 2, "brokenness_min_vertices", brokenness_min_vertices,
-            "brokenness_min_vertices >= 2");
-    require(positive(accuracy_scale_m), "accuracy_scale_m", accuracy_scale_m,
-            "accuracy_scale_m > 0");
-    require(positive(consistency_scale_m), "consistency_scale_m", consistency_scale_m,
-            "consistency_scale_m > 0");
-    require(nonneg(weight_coverage), "weight_coverage", weight_coverage, "weight_coverage >= 0");
-    require(nonneg(weight_relative_accuracy), "weight_relative_accuracy", weight_relative_accuracy,
-            "weight_relative_accuracy >= 0");
-    require(nonneg(weight_consistency), "weight_consistency", weight_consistency,
-            "weight_consistency >= 0");
-    require(nonneg(weight_brokenness), "weight_brokenness", weight_brokenness,
-            "weight_brokenness >= 0");
-    require(
+    internal::require(internal::isPositive(consistency_short_max_m), "consistency_short_max_m",
+                      consistency_short_max_m, "consistency_short_max_m > 0");
+    internal::require(std::isfinite(consistency_medium_max_m) &&
+                          consistency_medium_max_m > consistency_short_max_m,
+                      "consistency_medium_max_m", consistency_medium_max_m,
+                      "consistency_medium_max_m > consistency_short_max_m");
+    internal::require(internal::isPositive(brokenness_max_squared_error_m2),
+                      "brokenness_max_squared_error_m2", brokenness_max_squared_error_m2,
+                      "brokenness_max_squared_error_m2 > 0");
+    internal::require(brokenness_min_vertices >= 2, "brokenness_min_vertices",
+                      brokenness_min_vertices, "brokenness_min_vertices >= 2");
+    internal::require(internal::isPositive(accuracy_scale_m), "accuracy_scale_m", accuracy_scale_m,
+                      "accuracy_scale_m > 0");
+    internal::require(internal::isPositive(consistency_scale_m), "consistency_scale_m",
+                      consistency_scale_m, "consistency_scale_m > 0");
+    internal::require(internal::isNonNegative(weight_coverage), "weight_coverage", weight_coverage,
+                      "weight_coverage >= 0");
+    internal::require(internal::isNonNegative(weight_relative_accuracy), "weight_relative_accuracy",
+                      weight_relative_accuracy, "weight_relative_accuracy >= 0");
+    internal::require(internal::isNonNegative(weight_consistency), "weight_consistency",
+                      weight_consistency, "weight_consistency >= 0");
+    internal::require(internal::isNonNegative(weight_brokenness), "weight_brokenness",
+                      weight_brokenness, "weight_brokenness >= 0");
+    internal::require(
         weight_coverage + weight_relative_accuracy + weight_consistency + weight_brokenness > 0.0,
         "weight_coverage", weight_coverage, "at least one weight > 0");
 }

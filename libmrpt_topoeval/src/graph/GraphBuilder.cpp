@@ -12,6 +12,7 @@
 #include "internal/GraphEditor.h"
 #include "internal/attributes.h"
 #include "internal/outer_boundary.h"
+#include "internal/validation.h"
 #include "internal/voronoi_cgal.h"
 
 namespace mrpt_topoeval
@@ -71,48 +72,38 @@ void GraphBuilderParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
         "[m] an edge's direction at a vertex is measured up to this far along it");
 }
 
-namespace
-{
-template <class T>
-void require(bool ok, const char* name, T value, const char* rule)
-{
-    if (ok) return;
-    std::ostringstream os;
-    os << "[GraphBuilder] " << name << " = " << value << " violates " << rule;
-    throw InputError(os.str());
-}
-}  // namespace
-
 void GraphBuilderParameters::validate() const
 {
+    auto requireGB = [](bool ok, const char* name, double value, const char* rule)
+    { internal::require(ok, name, value, rule, "[GraphBuilder] "); };
     auto finite = [](double v) { return std::isfinite(v); };
-    require(finite(occupied_min_prob) && occupied_min_prob > 0.5 && occupied_min_prob <= 1.0,
-            "occupied_min_prob", occupied_min_prob, "0.5 < occupied_min_prob <= 1");
-    require(finite(free_max_prob) && free_max_prob >= 0.0 && free_max_prob < 0.5, "free_max_prob",
-            free_max_prob, "0 <= free_max_prob < 0.5");
-    require(finite(unknown_fill_radius_m) && unknown_fill_radius_m >= 0.0, "unknown_fill_radius_m",
-            unknown_fill_radius_m, "unknown_fill_radius_m >= 0");
-    require(finite(min_clearance_m) && min_clearance_m > 0.0, "min_clearance_m", min_clearance_m,
-            "min_clearance_m > 0");
-    require(finite(prune_dead_end_length_m) && prune_dead_end_length_m >= 0.0,
-            "prune_dead_end_length_m", prune_dead_end_length_m, "prune_dead_end_length_m >= 0");
-    require(finite(corner_spur_ratio) && corner_spur_ratio >= 0.0, "corner_spur_ratio",
-            corner_spur_ratio, "corner_spur_ratio >= 0");
-    require(finite(junction_disc_ratio) && junction_disc_ratio >= 0.0, "junction_disc_ratio",
-            junction_disc_ratio, "junction_disc_ratio >= 0");
-    require(finite(junction_disc_max_length_m) && junction_disc_max_length_m >= 0.0,
-            "junction_disc_max_length_m", junction_disc_max_length_m,
-            "junction_disc_max_length_m >= 0");
-    require(finite(spurious_dead_end_length_m) && spurious_dead_end_length_m >= 0.0,
-            "spurious_dead_end_length_m", spurious_dead_end_length_m,
-            "spurious_dead_end_length_m >= 0");
-    require(finite(alpha_radius_m) && alpha_radius_m >= 0.0, "alpha_radius_m", alpha_radius_m,
-            "alpha_radius_m >= 0");
-    require(finite(join_distance_m) && join_distance_m >= 0.0, "join_distance_m", join_distance_m,
-            "join_distance_m >= 0");
-    require(finite(edge_direction_distance_m) && edge_direction_distance_m > 0.0,
-            "edge_direction_distance_m", edge_direction_distance_m,
-            "edge_direction_distance_m > 0");
+    requireGB(finite(occupied_min_prob) && occupied_min_prob > 0.5 && occupied_min_prob <= 1.0,
+              "occupied_min_prob", occupied_min_prob, "0.5 < occupied_min_prob <= 1");
+    requireGB(finite(free_max_prob) && free_max_prob >= 0.0 && free_max_prob < 0.5, "free_max_prob",
+              free_max_prob, "0 <= free_max_prob < 0.5");
+    requireGB(finite(unknown_fill_radius_m) && unknown_fill_radius_m >= 0.0,
+              "unknown_fill_radius_m", unknown_fill_radius_m, "unknown_fill_radius_m >= 0");
+    requireGB(finite(min_clearance_m) && min_clearance_m > 0.0, "min_clearance_m", min_clearance_m,
+              "min_clearance_m > 0");
+    requireGB(finite(prune_dead_end_length_m) && prune_dead_end_length_m >= 0.0,
+              "prune_dead_end_length_m", prune_dead_end_length_m, "prune_dead_end_length_m >= 0");
+    requireGB(finite(corner_spur_ratio) && corner_spur_ratio >= 0.0, "corner_spur_ratio",
+              corner_spur_ratio, "corner_spur_ratio >= 0");
+    requireGB(finite(junction_disc_ratio) && junction_disc_ratio >= 0.0, "junction_disc_ratio",
+              junction_disc_ratio, "junction_disc_ratio >= 0");
+    requireGB(finite(junction_disc_max_length_m) && junction_disc_max_length_m >= 0.0,
+              "junction_disc_max_length_m", junction_disc_max_length_m,
+              "junction_disc_max_length_m >= 0");
+    requireGB(finite(spurious_dead_end_length_m) && spurious_dead_end_length_m >= 0.0,
+              "spurious_dead_end_length_m", spurious_dead_end_length_m,
+              "spurious_dead_end_length_m >= 0");
+    requireGB(finite(alpha_radius_m) && alpha_radius_m >= 0.0, "alpha_radius_m", alpha_radius_m,
+              "alpha_radius_m >= 0");
+    requireGB(finite(join_distance_m) && join_distance_m >= 0.0, "join_distance_m", join_distance_m,
+              "join_distance_m >= 0");
+    requireGB(finite(edge_direction_distance_m) && edge_direction_distance_m > 0.0,
+              "edge_direction_distance_m", edge_direction_distance_m,
+              "edge_direction_distance_m > 0");
 }
 
 // ---------------------------------------------------------------- construction

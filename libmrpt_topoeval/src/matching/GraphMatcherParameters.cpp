@@ -6,6 +6,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "internal/validation.h"
+
 namespace mrpt_topoeval
 {
 void GraphMatcherParameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
@@ -46,45 +48,34 @@ void GraphMatcherParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                  "[m] neighbour growing's relaxed edge-length allowance");
 }
 
-namespace
-{
-template <class T>
-void require(bool ok, const char* name, T value, const char* rule)
-{
-    if (ok) return;
-    std::ostringstream os;
-    os << name << " = " << value << " violates " << rule;
-    throw InputError(os.str());
-}
-bool unit(double v) { return std::isfinite(v) && v >= 0.0 && v <= 1.0; }
-bool nonneg(double v) { return std::isfinite(v) && v >= 0.0; }
-}  // namespace
-
 void GraphMatcherParameters::validate() const
 {
-    require(nonneg(edge_length_factor), "edge_length_factor", edge_length_factor,
-            "edge_length_factor >= 0");
-    require(nonneg(edge_length_allowance_m), "edge_length_allowance_m", edge_length_allowance_m,
-            "edge_length_allowance_m >= 0");
-    require(std::isfinite(max_angle_difference_deg) && max_angle_difference_deg > 0.0 &&
-                max_angle_difference_deg <= 180.0,
-            "max_angle_difference_deg", max_angle_difference_deg,
-            "0 < max_angle_difference_deg <= 180");
-    require(unit(min_isomorphism_similarity), "min_isomorphism_similarity",
-            min_isomorphism_similarity, "0 <= min_isomorphism_similarity <= 1");
-    require(min_isomorphism_vertices >= 1, "min_isomorphism_vertices", min_isomorphism_vertices,
-            "min_isomorphism_vertices >= 1");
-    require(std::isfinite(min_isomorphism_share) && min_isomorphism_share > 0.0 &&
-                min_isomorphism_share <= 1.0,
-            "min_isomorphism_share", min_isomorphism_share, "0 < min_isomorphism_share <= 1");
-    require(max_branches_per_seed >= 1, "max_branches_per_seed", max_branches_per_seed,
-            "max_branches_per_seed >= 1");
-    require(unit(min_growing_similarity), "min_growing_similarity", min_growing_similarity,
-            "0 <= min_growing_similarity <= 1");
-    require(nonneg(growing_edge_length_factor), "growing_edge_length_factor",
-            growing_edge_length_factor, "growing_edge_length_factor >= 0");
-    require(nonneg(growing_edge_length_allowance_m), "growing_edge_length_allowance_m",
-            growing_edge_length_allowance_m, "growing_edge_length_allowance_m >= 0");
+    internal::require(internal::isNonNegative(edge_length_factor), "edge_length_factor",
+                      edge_length_factor, "edge_length_factor >= 0");
+    internal::require(internal::isNonNegative(edge_length_allowance_m), "edge_length_allowance_m",
+                      edge_length_allowance_m, "edge_length_allowance_m >= 0");
+    internal::require(std::isfinite(max_angle_difference_deg) && max_angle_difference_deg > 0.0 &&
+                          max_angle_difference_deg <= 180.0,
+                      "max_angle_difference_deg", max_angle_difference_deg,
+                      "0 < max_angle_difference_deg <= 180");
+    internal::require(internal::isUnit(min_isomorphism_similarity), "min_isomorphism_similarity",
+                      min_isomorphism_similarity, "0 <= min_isomorphism_similarity <= 1");
+    internal::require(min_isomorphism_vertices >= 1, "min_isomorphism_vertices",
+                      min_isomorphism_vertices, "min_isomorphism_vertices >= 1");
+    internal::require(std::isfinite(min_isomorphism_share) && min_isomorphism_share > 0.0 &&
+                          min_isomorphism_share <= 1.0,
+                      "min_isomorphism_share", min_isomorphism_share,
+                      "0 < min_isomorphism_share <= 1");
+    internal::require(max_branches_per_seed >= 1, "max_branches_per_seed", max_branches_per_seed,
+                      "max_branches_per_seed >= 1");
+    internal::require(internal::isUnit(min_growing_similarity), "min_growing_similarity",
+                      min_growing_similarity, "0 <= min_growing_similarity <= 1");
+    internal::require(internal::isNonNegative(growing_edge_length_factor),
+                      "growing_edge_length_factor", growing_edge_length_factor,
+                      "growing_edge_length_factor >= 0");
+    internal::require(internal::isNonNegative(growing_edge_length_allowance_m),
+                      "growing_edge_length_allowance_m", growing_edge_length_allowance_m,
+                      "growing_edge_length_allowance_m >= 0");
 }
 
 }  // namespace mrpt_topoeval

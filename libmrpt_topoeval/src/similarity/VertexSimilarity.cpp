@@ -8,6 +8,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "internal/validation.h"
+
 namespace mrpt_topoeval
 {
 std::string toString(SimilarityMode m) { return m == SimilarityMode::Icp ? "icp" : "attributes"; }
@@ -73,50 +75,44 @@ void VertexSimilarityParameters::saveToConfigFile(mrpt::config::CConfigFileBase&
     MRPT_SAVE_CONFIG_VAR_COMMENT(threads, "[1] ICP worker threads; 0 = all cores");
 }
 
-namespace
-{
-template <class T>
-void require(bool ok, const char* name, T value, const char* rule)
-{
-    if (ok) return;
-    std::ostringstream os;
-    os << name << " = " << value << " violates " << rule;
-    throw InputError(os.str());
-}
-}  // namespace
-
 void VertexSimilarityParameters::validate() const
 {
-    auto pos = [](double v) { return std::isfinite(v) && v > 0.0; };
-    auto nonneg = [](double v) { return std::isfinite(v) && v >= 0.0; };
-    require(pos(angle_tolerance_deg), "angle_tolerance_deg", angle_tolerance_deg,
-            "angle_tolerance_deg > 0");
-    require(pos(length_tolerance), "length_tolerance", length_tolerance, "length_tolerance > 0");
-    require(pos(clearance_tolerance_m), "clearance_tolerance_m", clearance_tolerance_m,
-            "clearance_tolerance_m > 0");
-    require(nonneg(weight_angles), "weight_angles", weight_angles, "weight_angles >= 0");
-    require(nonneg(weight_lengths), "weight_lengths", weight_lengths, "weight_lengths >= 0");
-    require(nonneg(weight_vertex_clearance), "weight_vertex_clearance", weight_vertex_clearance,
-            "weight_vertex_clearance >= 0");
-    require(nonneg(weight_edge_clearance), "weight_edge_clearance", weight_edge_clearance,
-            "weight_edge_clearance >= 0");
-    require(weight_angles + weight_lengths + weight_vertex_clearance + weight_edge_clearance > 0,
-            "weight_angles", weight_angles, "at least one weight > 0");
-    require(std::isfinite(degree_mismatch_factor) && degree_mismatch_factor >= 0.0 &&
-                degree_mismatch_factor <= 1.0,
-            "degree_mismatch_factor", degree_mismatch_factor, "0 <= degree_mismatch_factor <= 1");
-    require(std::isfinite(neighbour_weight) && neighbour_weight >= 0.0 && neighbour_weight < 1.0,
-            "neighbour_weight", neighbour_weight, "0 <= neighbour_weight < 1");
-    require(neighbour_iterations >= 0 && neighbour_iterations <= 10, "neighbour_iterations",
-            neighbour_iterations, "0 <= neighbour_iterations <= 10");
-    require(pos(icp_radius_m), "icp_radius_m", icp_radius_m, "icp_radius_m > 0");
-    require(icp_start_angles >= 1 && icp_start_angles <= 72, "icp_start_angles", icp_start_angles,
-            "1 <= icp_start_angles <= 72");
-    require(pos(icp_rmse_tolerance_m), "icp_rmse_tolerance_m", icp_rmse_tolerance_m,
-            "icp_rmse_tolerance_m > 0");
-    require(icp_max_degree_difference >= 0, "icp_max_degree_difference", icp_max_degree_difference,
-            "icp_max_degree_difference >= 0");
-    require(threads >= 0 && threads <= 256, "threads", threads, "0 <= threads <= 256");
+    const auto pos = internal::isPositive;
+    internal::require(pos(angle_tolerance_deg), "angle_tolerance_deg", angle_tolerance_deg,
+                      "angle_tolerance_deg > 0");
+    internal::require(pos(length_tolerance), "length_tolerance", length_tolerance,
+                      "length_tolerance > 0");
+    internal::require(pos(clearance_tolerance_m), "clearance_tolerance_m", clearance_tolerance_m,
+                      "clearance_tolerance_m > 0");
+    internal::require(internal::isNonNegative(weight_angles), "weight_angles", weight_angles,
+                      "weight_angles >= 0");
+    internal::require(internal::isNonNegative(weight_lengths), "weight_lengths", weight_lengths,
+                      "weight_lengths >= 0");
+    internal::require(internal::isNonNegative(weight_vertex_clearance), "weight_vertex_clearance",
+                      weight_vertex_clearance, "weight_vertex_clearance >= 0");
+    internal::require(internal::isNonNegative(weight_edge_clearance), "weight_edge_clearance",
+                      weight_edge_clearance, "weight_edge_clearance >= 0");
+    internal::require(
+        weight_angles + weight_lengths + weight_vertex_clearance + weight_edge_clearance > 0,
+        "weight_angles", weight_angles, "at least one weight > 0");
+    internal::require(std::isfinite(degree_mismatch_factor) && degree_mismatch_factor >= 0.0 &&
+                          degree_mismatch_factor <= 1.0,
+                      "degree_mismatch_factor", degree_mismatch_factor,
+                      "0 <= degree_mismatch_factor <= 1");
+    internal::require(
+        std::isfinite(neighbour_weight) && neighbour_weight >= 0.0 && neighbour_weight < 1.0,
+        "neighbour_weight", neighbour_weight, "0 <= neighbour_weight < 1");
+    internal::require(neighbour_iterations >= 0 && neighbour_iterations <= 10,
+                      "neighbour_iterations", neighbour_iterations,
+                      "0 <= neighbour_iterations <= 10");
+    internal::require(pos(icp_radius_m), "icp_radius_m", icp_radius_m, "icp_radius_m > 0");
+    internal::require(icp_start_angles >= 1 && icp_start_angles <= 72, "icp_start_angles",
+                      icp_start_angles, "1 <= icp_start_angles <= 72");
+    internal::require(pos(icp_rmse_tolerance_m), "icp_rmse_tolerance_m", icp_rmse_tolerance_m,
+                      "icp_rmse_tolerance_m > 0");
+    internal::require(icp_max_degree_difference >= 0, "icp_max_degree_difference",
+                      icp_max_degree_difference, "icp_max_degree_difference >= 0");
+    internal::require(threads >= 0 && threads <= 256, "threads", threads, "0 <= threads <= 256");
 }
 
 }  // namespace mrpt_topoeval
