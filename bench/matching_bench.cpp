@@ -16,6 +16,8 @@
 #include <benchmark/benchmark.h>
 #include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/Parameters.h>
+#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/map_io.h>
 
@@ -80,6 +82,27 @@ const MapPair& cachedPair(const std::string& name)
         else if (name == "intel")
             slot = std::make_unique<MapPair>(loadPair("radish/intel-corrected_ref.yaml",
                                                       "slam_maps/intel_icp-slam_app-final.yaml"));
+        else if (name == "intel_self_rotated")
+        {
+            const auto f = testing::sharedDataFile("radish/intel-corrected_ref.yaml");
+            if (!f)
+                throw std::runtime_error("../shared/data/radish not found: pair not benchmarked");
+            const COccupancyGridMap2D g = loadMap(*f).grid;
+            slot = std::make_unique<MapPair>(
+                makePair(g, testing::transformGrid(g, 117.0 * M_PI / 180.0, {3.0, -8.0})));
+        }
+        else if (name == "campus_broken")
+        {
+            // 1240 x 740 cells each, every stage of compare doing real work (101 vertices,
+            // three brokenness groups).
+            const COccupancyGridMap2D campus = testing::makeCampusMap();
+            COccupancyGridMap2D broken =
+                testing::breakMap(campus, {16.5, 12.0}, 14.0 * M_PI / 180.0,
+                                  [](double x, double) { return x > 16.5; });
+            broken = testing::breakMap(broken, {31.0, 28.0}, -22.0 * M_PI / 180.0,
+                                       [](double x, double) { return x > 31.0; });
+            slot = std::make_unique<MapPair>(makePair(campus, broken));
+        }
         else if (name == "house")
             slot = std::make_unique<MapPair>(
                 loadPair("house/house_gt_trinary_res0.05.yaml", "house/map_6ccdcaa.yaml"));
@@ -187,8 +210,32 @@ void BM_Pipeline(benchmark::State& state, const std::string& name)
     setCounters(state, *p, m);
 }
 
+// The whole of `topoeval compare` after loading: both graphs, similarity, match, evaluation.
+void BM_Compare(benchmark::State& state, const std::string& name)
+{
+    const MapPair* p = pairOrSkip(state, name);
+    if (!p) return;
+    Parameters params;
+    if (state.range(0) == 1) params.similarity = icpParams(2);
+    QualityReport r;
+    for (auto _ : state)
+    {
+        r = evaluate(p->grid_gt, p->grid_map, params);
+        benchmark::DoNotOptimize(r.quality);
+    }
+    setCounters(state, *p, r.match);
+    state.counters["brokenness"] = r.brokenness.degree;
+}
+
 void registerAll()
 {
+    for (const std::string name : {"intel", "intel_self_rotated", "campus_broken"})
+        benchmark::RegisterBenchmark(("BM_Compare/" + name).c_str(), BM_Compare, name)
+            ->ArgName("icp")
+            ->Arg(0)
+            ->Arg(1)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
     for (const std::string name : {"office", "intel", "house"})
     {
         benchmark::RegisterBenchmark(("BM_AttributeSimilarity/" + name).c_str(),
