@@ -54,12 +54,14 @@ struct VertexSimilarityParameters : public mrpt::config::CLoadableOptions
     int neighbour_iterations = 1;
 
     // --- ICP (paper III-A, second approach; mrpt::slam::CICP)
-    /** Obstacle cells within this distance of a vertex form its point cloud [m]. */
+    /** Obstacle cells within max(this, the vertex's clearance + this / 3) of a vertex form its
+     * point cloud (a vertex in a room wider than this still sees its walls) [m]. */
     double icp_radius_m = 3.0;
     /** Start angles when the vertices' edges give none (paper: 12) [1]. */
     int icp_start_angles = 12;
-    /** Alignment error at which the ICP similarity reaches 0 [m] (RMS distance of matched
-     * points). */
+    /** Alignment error at which the ICP similarity reaches 0 [m]: similarity = goodness x
+     * max(0, 1 - rmse / this), goodness the mean share of each cloud's points matched (both
+     * ways), rmse the RMS distance of the matched points. */
     double icp_rmse_tolerance_m = 0.25;
     /** Only pairs whose degrees differ by at most this are aligned; others get 0 [1]. */
     int icp_max_degree_difference = 0;
