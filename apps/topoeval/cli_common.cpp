@@ -37,18 +37,18 @@ std::string oneLine(const std::string& msg)
     }
     return out;
 }
+}  // namespace
 
 void printError(const std::string& msg)
 {
     std::cout.flush();  // keep stdout and stderr in order on a terminal
     std::cerr << "topoeval: error: " << oneLine(msg) << std::endl;
 }
-}  // namespace
 
 std::string versionLine()
 {
-    return std::string("topoeval ") + TOPOEVAL_VERSION + " (" +
-           mrpt::system::MRPT_getVersion() + ")";
+    return std::string("topoeval ") + TOPOEVAL_VERSION + " (" + mrpt::system::MRPT_getVersion() +
+           ")";
 }
 
 int runGuarded(const std::function<int()>& body)

@@ -42,6 +42,10 @@ int runGuarded(const std::function<int()>& body);
 /** Prints "topoeval: warning: <msg>" on stderr. */
 void printWarning(const std::string& msg);
 
+/** Prints "topoeval: error: <msg>" on stderr, on one line, for errors a verb reports without
+ * stopping (`rank`: a map that cannot be read). */
+void printError(const std::string& msg);
+
 /** A verb's TCLAP command line whose help, version and errors are ours: `--help` prints the
  * usage on stdout and the verb exits 0; a parse error becomes a one-line UsageError. */
 class VerbCommandLine
@@ -94,5 +98,14 @@ void flushStdout();
 int verbGraph(int argc, char** argv);
 /** `topoeval config [--write F.ini [--force] | --check F.ini]`. */
 int verbConfig(int argc, char** argv);
+/** `topoeval compare GT MAP [options]`: quality report of one map (verb_compare.cpp). */
+int verbCompare(int argc, char** argv);
+/** `topoeval rank GT MAP... [options]`: several maps scored and ranked (verb_rank.cpp). */
+int verbRank(int argc, char** argv);
+/** `topoeval rawlog RAWLOG --ground-truth GT [options]`: ICP-SLAM on a rawlog, scores over
+ * time (verb_rawlog.cpp). Exit code 4: stopped early, outputs for the part done written. */
+int verbRawlog(int argc, char** argv);
+/** `topoeval series GT MAP... [options]`: the same scores over saved maps (verb_series.cpp). */
+int verbSeries(int argc, char** argv);
 
 }  // namespace mrpt_topoeval::cli

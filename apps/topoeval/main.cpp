@@ -28,6 +28,13 @@ const std::vector<Verb>& verbs()
          verbGraph},
         {"match", "Match a map's graph against the ground truth's: counts, --json, --image.",
          verbMatch},
+        {"compare", "Quality of a map against the ground truth: report, --json, --image.",
+         verbCompare},
+        {"rank", "Score several maps against one ground truth and rank them: table, --csv.",
+         verbRank},
+        {"rawlog", "ICP-SLAM on a rawlog, the map scored every N scans: CSV, plot, report.",
+         verbRawlog},
+        {"series", "Score a sequence of saved maps over time: the same CSV and plot.", verbSeries},
         {"config", "Print, --write or --check the INI configuration.", verbConfig},
     };
     return kVerbs;
@@ -48,7 +55,8 @@ void printHelp(std::ostream& os)
     os << "\nOptions:\n"
           "  --help      This list.\n"
           "  --version   The version.\n\n"
-          "Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 output error.\n";
+          "Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 output error,\n"
+          "4 stopped early (rawlog: Ctrl-C or truncated/corrupt rawlog; outputs written).\n";
 }
 
 int dispatch(int argc, char** argv)

@@ -4,6 +4,7 @@
 #include <mrpt/img/CImage.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/GraphMatch.h>
+#include <mrpt_topoeval/QualityReport.h>
 #include <mrpt_topoeval/TopologyGraph.h>
 
 namespace mrpt_topoeval
@@ -38,5 +39,22 @@ mrpt::img::CImage drawMatch(const mrpt::maps::COccupancyGridMap2D& gt_grid, cons
                             const mrpt::maps::COccupancyGridMap2D& map_grid,
                             const TopologyGraph& map, const GraphMatch& match,
                             const DrawOptions& opts = {});
+
+/** A quality report's match with its brokenness groups, like the paper's Fig. 7 and 9: the
+ * picture of drawMatch() (same layout, match lines, rings and limits), where each matched
+ * vertex, on both maps, is filled with the colour of its brokenness group and labelled with
+ * the group's number (0 = the largest group, as in BrokennessGroup order). Matched vertices in
+ * no accepted group are grey, unmatched non-spurious ones white; spurious ones keep their graph
+ * colour. Group numbers sit where the ids would; with `opts.draw_ids` the ids stay and the
+ * numbers go below the vertices. Below the maps: a line with quality, coverage and brokenness
+ * degree, one legend entry per group (number, vertices, yaw of its alignment), then the match
+ * and edge legends. Colours repeat after 10 groups; the numbers do not. Deterministic.
+ * \throws InputError if `opts.scale` is outside 1..8 or the report names a vertex that is not
+ * in its graph. */
+mrpt::img::CImage drawQualityReport(const mrpt::maps::COccupancyGridMap2D& gt_grid,
+                                    const TopologyGraph& gt,
+                                    const mrpt::maps::COccupancyGridMap2D& map_grid,
+                                    const TopologyGraph& map, const QualityReport& report,
+                                    const DrawOptions& opts = {});
 
 }  // namespace mrpt_topoeval

@@ -19,14 +19,13 @@ namespace mrpt_topoeval
 {
 namespace
 {
+using internal::kGrowingLine;
+using internal::kIsomorphismLine;
+using internal::kMissingRing;
 using internal::kShift;
 using internal::kSubPixel;
+using internal::MatchPanel;
 using Grid = mrpt::maps::COccupancyGridMap2D;
-
-// As in the paper's Fig. 7: green for the isomorphism's matches, red for neighbour growing.
-const cv::Scalar kIsomorphismLine(0, 190, 0);
-const cv::Scalar kGrowingLine(0, 0, 235);
-const cv::Scalar kMissingRing(200, 0, 200);  // magenta: no graph colour uses it
 
 // Limits that keep the picture viewable and its PNG small (the issue asks for ~4000 px).
 constexpr double kMaxWidthPx = 4000.0;
@@ -35,22 +34,6 @@ constexpr int kMarginPx = 6;
 constexpr int kGapPx = 24;  // between the two maps, so lines leaving the left map stay visible
 constexpr int kTitleHeightPx = 24;
 constexpr double kTitleFontScale = 0.5;
-
-/** One of the two maps as drawn: its picture, where it sits, how to find its vertices. */
-struct Panel
-{
-    cv::Mat img;
-    cv::Point origin;  // top-left corner in the whole picture
-    internal::PixelMapper px;
-    internal::GraphStyle style;
-
-    cv::Point fixedPoint(const Eigen::Vector2d& p) const
-    {
-        const cv::Point2d q = px.toPixel(p);
-        return {static_cast<int>(std::lround((q.x + origin.x) * kSubPixel)),
-                static_cast<int>(std::lround((q.y + origin.y) * kSubPixel))};
-    }
-};
 
 /** Rows and columns of a grid, at least 1 each, so ratios are defined for empty grids. */
 double rowsOf(const Grid& g) { return std::max<double>(1.0, static_cast<double>(g.getSizeY())); }
@@ -80,15 +63,16 @@ std::string title(const char* role, const std::string& file)
     return name.empty() ? std::string(role) : std::string(role) + ": " + name;
 }
 
-void checkPairs(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& match)
+void checkPairs(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& match,
+                const char* caller)
 {
     for (std::size_t i = 0; i < match.pairs.size(); ++i)
     {
         const VertexPair& p = match.pairs[i];
         const auto bad = [&](const char* side, int id, std::size_t n)
         {
-            throw InputError("drawMatch: pair " + std::to_string(i) + " names " + side +
-                             " vertex " + std::to_string(id) + ", but that graph has " +
+            throw InputError(std::string(caller) + ": pair " + std::to_string(i) + " names " +
+                             side + " vertex " + std::to_string(id) + ", but that graph has " +
                              std::to_string(n) + " vertices");
         };
         if (p.ground_truth < 0 || static_cast<std::size_t>(p.ground_truth) >= gt.vertices.size())
@@ -99,14 +83,30 @@ void checkPairs(const TopologyGraph& gt, const TopologyGraph& map, const GraphMa
 }
 }  // namespace
 
-mrpt::img::CImage drawMatch(const Grid& gt_grid, const TopologyGraph& gt, const Grid& map_grid,
-                            const TopologyGraph& map, const GraphMatch& match,
-                            const DrawOptions& opts)
+namespace internal
+{
+cv::Point MatchPanel::fixedPoint(const Eigen::Vector2d& p) const
+{
+    const cv::Point2d q = px.toPixel(p);
+    return {static_cast<int>(std::lround((q.x + origin.x) * kSubPixel)),
+            static_cast<int>(std::lround((q.y + origin.y) * kSubPixel))};
+}
+
+cv::Point MatchPanel::point(const Eigen::Vector2d& p) const
+{
+    const cv::Point2d q = px.toPixel(p);
+    return {static_cast<int>(std::lround(q.x)) + origin.x,
+            static_cast<int>(std::lround(q.y)) + origin.y};
+}
+
+MatchPicture drawMatchPicture(const Grid& gt_grid, const TopologyGraph& gt, const Grid& map_grid,
+                              const TopologyGraph& map, const GraphMatch& match,
+                              const DrawOptions& opts, const char* caller)
 {
     if (opts.scale < 1 || opts.scale > 8)
         throw InputError("DrawOptions::scale = " + std::to_string(opts.scale) +
                          " violates 1 <= scale <= 8");
-    checkPairs(gt, map, match);
+    checkPairs(gt, map, match, caller);
 
     // Common height (paper Fig. 5: both maps equally tall): `scale` pixels per cell of the
     // taller map, reduced until both maps side by side fit the width limit.
@@ -117,41 +117,43 @@ mrpt::img::CImage drawMatch(const Grid& gt_grid, const TopologyGraph& gt, const 
     height = std::min(height, (kMaxWidthPx - 2 * kMarginPx - kGapPx) / widths_per_height);
     height = std::max(height, 1.0);  // absurdly wide maps: 1 pixel high rather than nothing
 
-    std::vector<Panel> panels;
+    std::vector<cv::Mat> images;
+    std::vector<MatchPanel> panels;
     for (const auto& [grid, graph] :
          {std::pair<const Grid*, const TopologyGraph*>{&gt_grid, &gt},
           std::pair<const Grid*, const TopologyGraph*>{&map_grid, &map}})
     {
         const double px_per_cell = height / rowsOf(*grid);
-        panels.push_back({internal::drawGraphOverGrid(*grid, *graph, px_per_cell, opts.draw_ids,
-                                                      opts.draw_boundary),
-                          {},
-                          internal::PixelMapper(*grid, px_per_cell),
-                          internal::GraphStyle::forScale(px_per_cell)});
+        images.push_back(
+            drawGraphOverGrid(*grid, *graph, px_per_cell, opts.draw_ids, opts.draw_boundary));
+        panels.push_back({{},
+                          images.back().size(),
+                          PixelMapper(*grid, px_per_cell),
+                          GraphStyle::forScale(px_per_cell)});
     }
-    Panel& left = panels[0];
-    Panel& right = panels[1];
+    MatchPanel& left = panels[0];
+    MatchPanel& right = panels[1];
     left.origin = {kMarginPx, kTitleHeightPx};
-    right.origin = {kMarginPx + left.img.cols + kGapPx, kTitleHeightPx};
+    right.origin = {kMarginPx + left.size.width + kGapPx, kTitleHeightPx};
 
-    const int width = right.origin.x + right.img.cols + kMarginPx;
-    const int maps_height = std::max(left.img.rows, right.img.rows);
-    cv::Mat canvas(kTitleHeightPx + maps_height, width, CV_8UC3, internal::kWhite);
-    for (const Panel& p : panels)
-        p.img.copyTo(canvas(cv::Rect(p.origin.x, p.origin.y, p.img.cols, p.img.rows)));
+    const int width = right.origin.x + right.size.width + kMarginPx;
+    const int maps_height = std::max(left.size.height, right.size.height);
+    cv::Mat canvas(kTitleHeightPx + maps_height, width, CV_8UC3, kWhite);
+    for (std::size_t i = 0; i < panels.size(); ++i)
+        images[i].copyTo(canvas(cv::Rect(panels[i].origin, panels[i].size)));
 
     // Titles above each map; the left one may use the gap too.
     const int baseline_y = kTitleHeightPx - 7;
-    cv::putText(canvas, fitText(title("ground truth", gt.map.file), left.img.cols + kGapPx - 4),
-                {left.origin.x, baseline_y}, cv::FONT_HERSHEY_SIMPLEX, kTitleFontScale,
-                internal::kTextColour, 1, cv::LINE_AA);
-    cv::putText(canvas, fitText(title("map", map.map.file), right.img.cols),
+    cv::putText(canvas, fitText(title("ground truth", gt.map.file), left.size.width + kGapPx - 4),
+                {left.origin.x, baseline_y}, cv::FONT_HERSHEY_SIMPLEX, kTitleFontScale, kTextColour,
+                1, cv::LINE_AA);
+    cv::putText(canvas, fitText(title("map", map.map.file), right.size.width),
                 {right.origin.x, baseline_y}, cv::FONT_HERSHEY_SIMPLEX, kTitleFontScale,
-                internal::kTextColour, 1, cv::LINE_AA);
+                kTextColour, 1, cv::LINE_AA);
 
     // Unmatched ground-truth vertices the matcher tried to match (those "missing" counts:
     // non-spurious, with a non-spurious edge): a ring just outside the vertex mark.
-    const internal::MatchView gt_view = internal::makeMatchView(gt);
+    const MatchView gt_view = makeMatchView(gt);
     std::vector<bool> matched(gt.vertices.size(), false);
     for (const VertexPair& p : match.pairs)
         matched[static_cast<std::size_t>(p.ground_truth)] = true;
@@ -173,16 +175,29 @@ mrpt::img::CImage drawMatch(const Grid& gt_grid, const TopologyGraph& gt, const 
                      stage == MatchStage::Isomorphism ? kIsomorphismLine : kGrowingLine, 2,
                      cv::LINE_AA, kShift);
         }
+    return {canvas, left, right};
+}
 
-    // The counts of the paper's Table II on their own row, the graphs' colours below.
-    using Mark = internal::LegendEntry::Mark;
-    const std::vector<internal::LegendEntry> counts = {
+std::vector<LegendEntry> matchLegendEntries(const GraphMatch& match)
+{
+    using Mark = LegendEntry::Mark;
+    return {
         {"isomorphism: " + std::to_string(match.isomorphism), kIsomorphismLine, Mark::Line},
         {"neighbour growing: " + std::to_string(match.neighbour_growing), kGrowingLine, Mark::Line},
         {"missing: " + std::to_string(match.missing), kMissingRing, Mark::Ring}};
+}
+}  // namespace internal
+
+mrpt::img::CImage drawMatch(const Grid& gt_grid, const TopologyGraph& gt, const Grid& map_grid,
+                            const TopologyGraph& map, const GraphMatch& match,
+                            const DrawOptions& opts)
+{
+    const internal::MatchPicture pic =
+        internal::drawMatchPicture(gt_grid, gt, map_grid, map, match, opts, "drawMatch");
+    // The counts of the paper's Table II on their own row, the graphs' colours below.
     const cv::Mat out = internal::stackVertically(
-        {canvas, internal::drawLegend(canvas.cols, counts),
-         internal::drawLegend(canvas.cols, internal::graphLegendEntries(opts.draw_boundary))});
+        {pic.canvas, internal::drawLegend(pic.canvas.cols, internal::matchLegendEntries(match)),
+         internal::drawLegend(pic.canvas.cols, internal::graphLegendEntries(opts.draw_boundary))});
     return mrpt::img::CImage(out, mrpt::img::SHALLOW_COPY);
 }
 

@@ -37,8 +37,9 @@ std::string QualityReport::briefReport() const
          fmt("%.2f", relative_accuracy.score) + "), global " + fmt("%.3f", global_accuracy.rmse_m) +
          " m rmse\n";
     s += "consistency" + consistencyLine(*this) + "\n";
-    s += "brokenness  " + std::to_string(brokenness.degree) + " (" +
-         std::to_string(brokenness.groups.size()) + " groups)\n";
+    const std::size_t ng = brokenness.groups.size();
+    s += "brokenness  " + std::to_string(brokenness.degree) + " (" + std::to_string(ng) +
+         (ng == 1 ? " group" : " groups") + ")\n";
     return s;
 }
 

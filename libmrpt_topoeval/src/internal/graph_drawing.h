@@ -1,12 +1,14 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #pragma once
 
-// What every picture shares (drawTopologyGraph(), drawMatch()): colours, the world-to-pixel
-// mapping, a grid with its Topology Graph drawn over it, and legend strips. OpenCV stays here,
-// out of the public headers.
+// What every picture shares (drawTopologyGraph(), drawMatch(), drawQualityReport()): colours,
+// the world-to-pixel mapping, a grid with its Topology Graph drawn over it, legend strips, and
+// the side-by-side layout of a match. OpenCV stays here, out of the public headers.
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt_topoeval/GraphMatch.h>
 #include <mrpt_topoeval/TopologyGraph.h>
+#include <mrpt_topoeval/drawing.h>
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
@@ -95,5 +97,47 @@ cv::Mat drawLegend(int width, const std::vector<LegendEntry>& entries);
 
 /** `parts` one below the other, left-aligned on white, as wide as the widest. */
 cv::Mat stackVertically(const std::vector<cv::Mat>& parts);
+
+// ---- Match pictures (drawMatch(), drawQualityReport(); draw_match.cpp)
+
+// As in the paper's Fig. 7: green for the isomorphism's matches, red for neighbour growing.
+inline const cv::Scalar kIsomorphismLine(0, 190, 0);
+inline const cv::Scalar kGrowingLine(0, 0, 235);
+inline const cv::Scalar kMissingRing(200, 0, 200);  // magenta: no graph colour uses it
+
+/** One of the two maps of a match picture: where it sits and how to find its vertices. */
+struct MatchPanel
+{
+    cv::Point origin;  //!< Top-left corner in the whole picture.
+    cv::Size size;     //!< Of the map's picture.
+    PixelMapper px;
+    GraphStyle style;
+
+    /** toPixel() in the whole picture, in OpenCV's fixed point (kShift fractional bits). */
+    cv::Point fixedPoint(const Eigen::Vector2d& p) const;
+    /** toPixel() in the whole picture, rounded to whole pixels. */
+    cv::Point point(const Eigen::Vector2d& p) const;
+};
+
+/** The ground-truth map (left) and the robot map (right) side by side with their graphs and
+ * titles, rings around the ground-truth vertices GraphMatch::missing counts, and a line per
+ * matched pair: what drawMatch() and drawQualityReport() share. */
+struct MatchPicture
+{
+    cv::Mat canvas;
+    MatchPanel ground_truth, map;
+};
+
+/** Draws the MatchPicture (layout and limits as documented at drawMatch()).
+ * \throws InputError if `opts.scale` is outside 1..8 or a pair names a vertex that is not in
+ * its graph; `caller` starts the message. */
+MatchPicture drawMatchPicture(const mrpt::maps::COccupancyGridMap2D& gt_grid,
+                              const TopologyGraph& gt,
+                              const mrpt::maps::COccupancyGridMap2D& map_grid,
+                              const TopologyGraph& map, const GraphMatch& match,
+                              const DrawOptions& opts, const char* caller);
+
+/** The legend entries of the match lines and rings, with the counts of the paper's Table II. */
+std::vector<LegendEntry> matchLegendEntries(const GraphMatch& match);
 
 }  // namespace mrpt_topoeval::internal

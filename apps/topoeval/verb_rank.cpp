@@ -1,0 +1,439 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// `topoeval rank GT MAP...`: scores several maps against one ground truth, in parallel, and
+// prints them ranked per attribute and overall, like the paper's Table I; optionally as CSV.
+
+#include <mrpt/core/exceptions.h>
+#include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/output.h>
+
+#include <algorithm>
+#include <atomic>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <new>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include "cli_common.h"
+
+namespace fs = std::filesystem;
+
+namespace mrpt_topoeval::cli
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+/** One map's outcome: a report, or the reason there is none. */
+struct MapResult
+{
+    std::string file;  //!< As given.
+    bool ok = false;
+    bool internal_error = false;  //!< A bug or resource failure rather than a bad file.
+    std::string error;
+    QualityReport report;
+
+    /** Mean of the non-empty local consistency classes' scores (as `quality` combines them),
+     * 0 when there is none. */
+    double consistency() const
+    {
+        double sum = 0.0;
+        int n = 0;
+        for (const ConsistencyClass& c : report.local_consistency)
+            if (c.pairs > 0)
+            {
+                sum += c.score;
+                ++n;
+            }
+        return n ? sum / n : 0.0;
+    }
+    bool matched() const { return ok && !report.match.pairs.empty(); }
+};
+
+/** Loads and evaluates one map against the (shared, read-only) ground-truth grid. Never
+ * throws: the outcome, good or bad, is in the result, so one bad map does not stop the others. */
+void evaluateOne(const mrpt::maps::COccupancyGridMap2D& gt_grid, const Parameters& params,
+                 MapResult& res)
+{
+    try
+    {
+        const LoadedMap m = loadMap(res.file, params.map_load);
+        TopologyGraph graph;
+        res.report = evaluate(gt_grid, m.grid, params, nullptr, &graph);
+        if (graph.vertices.empty() && graph.warnings.empty())
+            res.report.messages.push_back("map: the Topology Graph is empty");
+        res.ok = true;
+    }
+    catch (const InputError& e)
+    {
+        res.error = e.what();
+    }
+    catch (const std::bad_alloc&)
+    {
+        res.error = "out of memory";
+        res.internal_error = true;
+    }
+    catch (const std::exception& e)
+    {
+        res.error = "internal error: " + mrpt::exception_to_str(e);
+        res.internal_error = true;
+    }
+    catch (...)
+    {
+        res.error = "internal error: unknown exception";
+        res.internal_error = true;
+    }
+}
+
+/** Ranks of `values` (higher is better) among the maps with `valid`: 1 is the best, maps
+ * whose values agree to `decimals` decimals share their positions, written "2-3" as in the
+ * paper's Table I. Invalid maps get "". */
+std::vector<std::string> ranks(const std::vector<double>& values, const std::vector<bool>& valid,
+                               int decimals = 3)
+{
+    const double scale = std::pow(10.0, decimals);
+    std::vector<std::int64_t> key(values.size(), 0);
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < values.size(); ++i)
+        if (valid[i])
+        {
+            // NaN never comes from the evaluator; should it, it ranks last.
+            key[i] = std::isfinite(values[i]) ? std::llround(values[i] * scale)
+                                              : std::numeric_limits<std::int64_t>::min();
+            order.push_back(i);
+        }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return key[a] > key[b]; });
+    std::vector<std::string> out(values.size());
+    for (std::size_t first = 0; first < order.size();)
+    {
+        std::size_t last = first;
+        while (last + 1 < order.size() && key[order[last + 1]] == key[order[first]]) ++last;
+        const std::string r = first == last
+                                  ? std::to_string(first + 1)
+                                  : std::to_string(first + 1) + "-" + std::to_string(last + 1);
+        for (std::size_t k = first; k <= last; ++k) out[order[k]] = r;
+        first = last + 1;
+    }
+    return out;
+}
+
+/** `v` with `decimals` decimals, trailing zeros removed; "" if not finite. Locale
+ * independent (CSV readers expect a '.'). */
+std::string num(double v, int decimals)
+{
+    if (!std::isfinite(v)) return "";
+    char buf[64];
+    const auto res = std::to_chars(buf, buf + sizeof(buf), v, std::chars_format::fixed, decimals);
+    std::string s(buf, res.ptr);
+    if (s.find('.') != std::string::npos)
+    {
+        while (s.back() == '0') s.pop_back();
+        if (s.back() == '.') s.pop_back();
+    }
+    return s == "-0" ? "0" : s;
+}
+
+/** Fixed decimals for the table, "-" if not finite. */
+std::string fixed(double v, int decimals)
+{
+    if (!std::isfinite(v)) return "-";
+    char buf[64];
+    const auto res = std::to_chars(buf, buf + sizeof(buf), v, std::chars_format::fixed, decimals);
+    return std::string(buf, res.ptr);
+}
+
+/** A CSV field, quoted when it holds a comma, quote or line break (RFC 4180). */
+std::string csvField(const std::string& s)
+{
+    if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (const char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    return out + "\"";
+}
+
+/** All ranks of the maps, in the order given. */
+struct Ranking
+{
+    std::vector<std::string> overall, coverage, relative_accuracy, consistency, brokenness;
+};
+
+Ranking rankMaps(const std::vector<MapResult>& results)
+{
+    const std::size_t n = results.size();
+    std::vector<bool> valid(n);
+    std::vector<double> quality(n), coverage(n), accuracy(n), consistency(n), brokenness(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const MapResult& m = results[i];
+        valid[i] = m.ok;
+        if (!m.ok) continue;
+        quality[i] = m.report.quality;
+        coverage[i] = m.report.coverage;
+        accuracy[i] = m.report.relative_accuracy.score;
+        consistency[i] = m.consistency();
+        // By score (1 / (1 + degree), 0 when nothing matched): a map that matched nothing
+        // has degree 0 but is not the least broken.
+        brokenness[i] = m.report.brokenness.score;
+    }
+    return {ranks(quality, valid), ranks(coverage, valid), ranks(accuracy, valid),
+            ranks(consistency, valid), ranks(brokenness, valid)};
+}
+
+std::string consistencyScore(const MapResult& m, std::size_t cls, bool for_csv)
+{
+    const auto& classes = m.report.local_consistency;
+    if (cls >= classes.size() || classes[cls].pairs == 0) return for_csv ? "" : "-";
+    return for_csv ? num(classes[cls].score, 4) : fixed(classes[cls].score, 2);
+}
+
+std::string csvText(const std::vector<MapResult>& results, const Ranking& rk)
+{
+    std::string out =
+        "file,rank,quality,coverage,relative_accuracy_rmse_m,relative_accuracy_score,"
+        "consistency_short,consistency_medium,consistency_long,brokenness,rank_coverage,"
+        "rank_relative_accuracy,rank_consistency,rank_brokenness\n";
+    for (std::size_t i = 0; i < results.size(); ++i)
+    {
+        const MapResult& m = results[i];
+        std::vector<std::string> f = {csvField(m.file)};
+        if (m.ok)
+        {
+            const QualityReport& r = m.report;
+            // Quantities measured on matched vertices are empty when nothing was matched.
+            const bool matched = m.matched();
+            f.insert(f.end(), {rk.overall[i], num(r.quality, 4), num(r.coverage, 4),
+                               matched ? num(r.relative_accuracy.rmse_m, 4) : "",
+                               num(r.relative_accuracy.score, 4), consistencyScore(m, 0, true),
+                               consistencyScore(m, 1, true), consistencyScore(m, 2, true),
+                               matched ? std::to_string(r.brokenness.degree) : "", rk.coverage[i],
+                               rk.relative_accuracy[i], rk.consistency[i], rk.brokenness[i]});
+        }
+        else
+            f.resize(14);  // a map that could not be evaluated: its file, nothing else
+        for (std::size_t k = 0; k < f.size(); ++k) out += (k ? "," : "") + f[k];
+        out += "\n";
+    }
+    return out;
+}
+
+/** The names the table shows: file names, or the paths as given where two maps share one. */
+std::vector<std::string> displayNames(const std::vector<MapResult>& results)
+{
+    std::vector<std::string> names;
+    for (const MapResult& m : results) names.push_back(fs::path(m.file).filename().string());
+    std::set<std::string> seen, twice;
+    for (const auto& n : names)
+        if (!seen.insert(n).second) twice.insert(n);
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (twice.count(names[i]) || names[i].empty()) names[i] = results[i].file;
+    return names;
+}
+
+void printTable(std::ostream& os, const std::vector<MapResult>& results, const Ranking& rk)
+{
+    const std::vector<std::string> header = {"map",   "rank",   "quality", "coverage", "rel.acc.",
+                                             "short", "medium", "long",    "broken",   "r.cov",
+                                             "r.acc", "r.cons", "r.broken"};
+    std::vector<std::vector<std::string>> rows;
+    const std::vector<std::string> names = displayNames(results);
+    for (std::size_t i = 0; i < results.size(); ++i)
+    {
+        const MapResult& m = results[i];
+        if (!m.ok)
+        {
+            rows.push_back({names[i], "error: " + m.error});
+            continue;
+        }
+        const QualityReport& r = m.report;
+        rows.push_back({names[i], rk.overall[i], fixed(r.quality, 3), fixed(r.coverage, 3),
+                        fixed(r.relative_accuracy.score, 3), consistencyScore(m, 0, false),
+                        consistencyScore(m, 1, false), consistencyScore(m, 2, false),
+                        m.matched() ? std::to_string(r.brokenness.degree) : "-", rk.coverage[i],
+                        rk.relative_accuracy[i], rk.consistency[i], rk.brokenness[i]});
+    }
+    std::vector<std::size_t> width(header.size());
+    for (std::size_t c = 0; c < header.size(); ++c) width[c] = header[c].size();
+    for (const auto& row : rows)
+        if (row.size() == header.size())
+            for (std::size_t c = 0; c < row.size(); ++c)
+                width[c] = std::max(width[c], row[c].size());
+    const auto print = [&](const std::vector<std::string>& row)
+    {
+        std::string line;
+        for (std::size_t c = 0; c < row.size(); ++c)
+        {
+            const std::string& cell = row[c];
+            // The map name and an error message left-aligned, numbers and ranks right-aligned.
+            const bool left = c == 0 || row.size() != header.size();
+            const std::size_t pad = width[c] > cell.size() ? width[c] - cell.size() : 0;
+            if (c) line += "  ";
+            line += left ? cell + (c + 1 < row.size() ? std::string(pad, ' ') : "")
+                         : std::string(pad, ' ') + cell;
+        }
+        os << line << "\n";
+    };
+    print(header);
+    for (const auto& row : rows) print(row);
+    os << "\nrank: by quality. rel.acc.: relative accuracy score. short, medium, long: local "
+          "consistency scores (-: no pair in that class).\n"
+          "broken: brokenness degree. r.*: rank by coverage, relative accuracy, mean consistency "
+          "score, brokenness (1 / (1 + degree); 0 if nothing matched).\n"
+          "Higher scores rank first; values equal to 3 decimals share a rank (\"1-2\").\n";
+}
+}  // namespace
+
+int verbRank(int argc, char** argv)
+{
+    const auto t_run = Clock::now();
+    VerbCommandLine cl(
+        "rank",
+        "Scores several maps against one ground truth as 'topoeval compare' does (Schwertfeger "
+        "& Birk 2013, section IV) and prints them as a table like the paper's Table I: per map "
+        "its overall rank (by quality), quality, coverage, relative accuracy score, local "
+        "consistency scores (short, medium, long), brokenness degree, and its rank by each "
+        "attribute; equal values share a rank ('1-2'). Maps are evaluated in parallel, the "
+        "results do not depend on the number of threads and are listed in the order given. "
+        "--csv writes the table with a header row. A map that cannot be read is listed with "
+        "its error, the others are still ranked, and the exit code is 2 (1 for an internal "
+        "error). Existing files are never replaced without --force. Exit codes: 0 ok, 1 "
+        "internal error, 2 bad input or usage, 3 output error.");
+    TCLAP::CmdLine& cmd = cl.cmd();
+    // Declared in reverse order of the usage line (TCLAP lists the last added first).
+    TCLAP::SwitchArg force_arg("f", "force", "Replace an existing CSV file.", cmd);
+    TCLAP::ValueArg<std::string> csv_arg("", "csv",
+                                         "Write the table as CSV (header row first) to this file.",
+                                         false, "", "OUT.csv", cmd);
+    TCLAP::ValueArg<int> threads_arg(
+        "", "threads",
+        "Threads in all, 0 = all cores; overrides [VertexSimilarity] threads. Up to this many "
+        "maps are evaluated at once, and ICP similarity shares what is left. Results do not "
+        "depend on it.",
+        false, 0, "N", cmd);
+    TCLAP::ValueArg<std::string> similarity_arg(
+        "s", "similarity",
+        "Vertex similarity: 'attributes' (fast) or 'icp' (obstacles around each vertex aligned "
+        "by ICP); overrides [VertexSimilarity] mode (default attributes).",
+        false, "", "attributes|icp", cmd);
+    TCLAP::ValueArg<double> res_arg(
+        "r", "resolution",
+        "Cell size for plain images and .simplemap files [m/cell]; overrides [MapLoad] "
+        "resolution_m (default 0.05).",
+        false, 0.0, "R", cmd);
+    TCLAP::ValueArg<std::string> config_arg(
+        "c", "config", "Parameters from this INI file (see 'topoeval config').", false, "", "F.ini",
+        cmd);
+    TCLAP::UnlabeledMultiArg<std::string> maps_arg(
+        "GT_MAPS",
+        "The ground truth, then one or more maps to score. ROS map_server .yaml, image (.png "
+        ".pgm .bmp .jpg), MRPT .gridmap[.gz] or .simplemap[.gz].",
+        false, "GT MAP...", cmd);
+    if (const auto done = cl.parse(argc, argv)) return *done;
+
+    const std::vector<std::string>& args = maps_arg.getValue();
+    if (args.empty()) throw cl.usageError("missing the GT and MAP arguments");
+    if (args.size() == 1) throw cl.usageError("missing the MAP arguments (one or more)");
+    for (std::size_t i = 0; i < args.size(); ++i)
+        if (args[i].empty())
+            throw cl.usageError(i == 0 ? std::string("the GT argument is empty")
+                                       : "MAP argument " + std::to_string(i) + " is empty");
+    const std::string gt_path = args[0];
+    const std::string csv_path = csv_arg.getValue();
+    const bool force = force_arg.getValue();
+    if (csv_arg.isSet() && csv_path.empty()) throw cl.usageError("--csv needs a file name");
+    if (threads_arg.isSet() && (threads_arg.getValue() < 0 || threads_arg.getValue() > 256))
+        throw cl.usageError("--threads " + std::to_string(threads_arg.getValue()) +
+                            " violates 0 <= N <= 256");
+    const std::string similarity_mode = similarity_arg.getValue();
+    if (similarity_arg.isSet() && similarity_mode != "attributes" && similarity_mode != "icp")
+        throw cl.usageError("--similarity '" + similarity_mode +
+                            "' is not one of: attributes, icp");
+
+    Parameters params =
+        loadParameters(config_arg.getValue(),
+                       res_arg.isSet() ? std::optional<double>(res_arg.getValue()) : std::nullopt);
+    if (similarity_arg.isSet()) params.similarity.mode = similarityModeFromString(similarity_mode);
+    if (threads_arg.isSet()) params.similarity.threads = threads_arg.getValue();
+    params.validate();
+
+    std::vector<std::string> inputs = args;
+    inputs.push_back(config_arg.getValue());
+    if (!csv_path.empty()) checkOutputPath(csv_path, force, inputs);
+
+    // The ground truth once, shared read-only by every evaluation: nothing to rank without it.
+    const LoadedMap gt = loadMap(gt_path, params.map_load);
+
+    std::vector<MapResult> results(args.size() - 1);
+    for (std::size_t i = 0; i < results.size(); ++i) results[i].file = args[i + 1];
+
+    // The thread budget: maps at once, and what is left for each one's ICP similarity (so N
+    // maps with ICP do not start N x cores threads).
+    const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t budget =
+        params.similarity.threads > 0 ? static_cast<std::size_t>(params.similarity.threads) : hw;
+    const std::size_t workers = std::min(budget, results.size());
+    Parameters worker_params = params;
+    worker_params.similarity.threads = static_cast<int>(std::max<std::size_t>(1, budget / workers));
+
+    std::atomic<std::size_t> next{0};
+    const auto work = [&]
+    {
+        for (std::size_t i = next++; i < results.size(); i = next++)
+            evaluateOne(gt.grid, worker_params, results[i]);
+    };
+    std::vector<std::thread> pool;
+    try
+    {
+        for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
+    }
+    catch (const std::system_error&)
+    {
+        // The system gave fewer threads than asked: those started, and this one, share the maps.
+    }
+    work();  // the main thread is a worker too
+    for (auto& t : pool) t.join();
+
+    // Warnings in the order the maps were given, whatever order they finished in.
+    for (const MapResult& m : results)
+        for (const auto& msg : m.report.messages) printWarning(m.file + ": " + msg);
+
+    const Ranking rk = rankMaps(results);
+    if (!csv_path.empty()) writeFileAtomic(csv_path, csvText(results, rk), force);
+
+    std::ostream& os = std::cout;
+    os << "ground truth  " << gt.file << " (" << gt.format << ")\n";
+    os << "similarity    " << toString(params.similarity.mode) << "\n";
+    os << "maps          " << results.size() << " (" << pool.size() + 1 << " at a time), "
+       << fixed(msSince(t_run) / 1000.0, 2) << " s\n\n";
+    printTable(os, results, rk);
+    if (!csv_path.empty()) os << "wrote         " << csv_path << "\n";
+    flushStdout();
+
+    int code = kExitOk;
+    for (const MapResult& m : results)
+        if (!m.ok)
+        {
+            printError(m.error);
+            code = m.internal_error ? kExitInternalError : (code == kExitOk ? kExitBadInput : code);
+        }
+    return code;
+}
+
+}  // namespace mrpt_topoeval::cli

@@ -1,0 +1,189 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// `topoeval series GT MAP...`: the scoring of `rawlog` over maps saved by another SLAM system
+// (a map every N steps): the same scores.csv and scores.png (doc/rawlog.md).
+
+#include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/RawlogScorer.h>
+#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/output.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "cli_common.h"
+#include "scores_output.h"
+
+namespace fs = std::filesystem;
+
+namespace mrpt_topoeval::cli
+{
+namespace
+{
+std::string lower(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    return s;
+}
+
+bool isMapFile(const fs::path& p)
+{
+    const std::string name = lower(p.filename().string());
+    for (const char* ext : {".yaml", ".yml", ".gridmap", ".gridmap.gz", ".simplemap",
+                            ".simplemap.gz", ".png", ".pgm", ".bmp", ".jpg", ".jpeg"})
+    {
+        const std::string e = ext;
+        if (name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0)
+            return true;
+    }
+    return false;
+}
+
+bool isImage(const fs::path& p)
+{
+    const std::string e = lower(p.extension().string());
+    return e == ".png" || e == ".pgm" || e == ".bmp" || e == ".jpg" || e == ".jpeg";
+}
+
+/** A folder's maps sorted by name; an image with a YAML beside it is the YAML's. */
+std::vector<std::string> mapsInFolder(const std::string& dir)
+{
+    std::vector<std::string> out;
+    for (const auto& e : fs::directory_iterator(dir))
+    {
+        if (!e.is_regular_file() || !isMapFile(e.path())) continue;
+        if (isImage(e.path()))
+        {
+            fs::path y = e.path();
+            if (fs::exists(y.replace_extension(".yaml")) || fs::exists(y.replace_extension(".yml")))
+                continue;
+        }
+        out.push_back(e.path().string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+/** The last number in a file name (mapbuilt_00200.yaml -> 200), or `fallback`. */
+std::size_t numberInName(const std::string& path, std::size_t fallback)
+{
+    const std::string name = fs::path(path).filename().string();
+    std::size_t end = std::string::npos;
+    for (std::size_t i = name.size(); i-- > 0;)
+        if (std::isdigit(static_cast<unsigned char>(name[i])))
+        {
+            end = i;
+            break;
+        }
+    if (end == std::string::npos) return fallback;
+    std::size_t begin = end;
+    while (begin > 0 && std::isdigit(static_cast<unsigned char>(name[begin - 1]))) --begin;
+    if (end - begin > 15) return fallback;
+    return static_cast<std::size_t>(std::stoull(name.substr(begin, end - begin + 1)));
+}
+}  // namespace
+
+int verbSeries(int argc, char** argv)
+{
+    VerbCommandLine cl(
+        "series",
+        "Scores a sequence of saved maps against one ground truth, as 'rawlog' scores its "
+        "snapshots, for SLAM systems other than MRPT's ICP-SLAM (e.g. an RBPF run's map every "
+        "200 steps). MAP may be a folder: its maps sorted by name (an image with a YAML beside "
+        "it counts once). The 'entry' column is the last number in each map's file name "
+        "(mapbuilt_00200 -> 200), or its position; time_s and scans are empty/0. Outputs in "
+        "DIR: scores.csv (row by row), scores.png, report.json. Existing outputs are never "
+        "replaced without --force. Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 "
+        "output error.");
+    TCLAP::CmdLine& cmd = cl.cmd();
+    TCLAP::SwitchArg force_arg("f", "force", "Replace existing output files.", cmd);
+    TCLAP::ValueArg<std::string> out_arg("o", "out", "Output folder (default: series-scores).",
+                                         false, "series-scores", "DIR", cmd);
+    TCLAP::ValueArg<double> res_arg(
+        "r", "resolution",
+        "Cell size for plain images and .simplemap files [m/cell]; overrides [MapLoad] "
+        "resolution_m (default 0.05).",
+        false, 0.0, "R", cmd);
+    TCLAP::ValueArg<std::string> config_arg(
+        "c", "config", "Parameters from this INI file (see 'topoeval config').", false, "", "F.ini",
+        cmd);
+    TCLAP::UnlabeledMultiArg<std::string> maps_arg(
+        "GT_MAPS", "The ground truth, then the maps in time order (files or folders).", false,
+        "GT MAP...", cmd);
+    if (const auto done = cl.parse(argc, argv)) return *done;
+
+    const std::vector<std::string>& args = maps_arg.getValue();
+    if (args.empty()) throw cl.usageError("missing the GT and MAP arguments");
+    if (args.size() == 1) throw cl.usageError("missing the MAP arguments");
+    const std::string gt_path = args[0];
+    std::vector<std::string> maps;
+    for (std::size_t i = 1; i < args.size(); ++i)
+    {
+        std::error_code ec;
+        if (!fs::exists(args[i], ec)) throw InputError(args[i] + ": no such file");
+        if (fs::is_directory(args[i], ec))
+        {
+            const auto in = mapsInFolder(args[i]);
+            if (in.empty()) throw InputError(args[i] + ": a folder with no map file");
+            maps.insert(maps.end(), in.begin(), in.end());
+        }
+        else
+            maps.push_back(args[i]);
+    }
+    const std::string dir = out_arg.getValue();
+    if (dir.empty()) throw cl.usageError("--out needs a folder name");
+    const bool force = force_arg.getValue();
+    const Parameters params =
+        loadParameters(config_arg.getValue(),
+                       res_arg.isSet() ? std::optional<double>(res_arg.getValue()) : std::nullopt);
+    const LoadedMap gt = loadMap(gt_path, params.map_load);
+
+    prepareOutputFolder(dir, {"scores.csv", "scores.png", "report.json"}, force);
+    const auto out = [&](const std::string& name) { return (fs::path(dir) / name).string(); };
+    ScoresCsv csv(out("scores.csv"));
+    std::vector<ScoreRow> rows;
+    std::ostringstream files;
+    for (std::size_t i = 0; i < maps.size(); ++i)
+    {
+        const LoadedMap m = loadMap(maps[i], params.map_load);
+        const auto t0 = std::chrono::steady_clock::now();
+        const QualityReport report = evaluate(gt.grid, m.grid, params);
+        ScoreRow row = scoreRowFromReport(report);
+        row.step = static_cast<int>(i) + 1;
+        row.entry = numberInName(maps[i], i);
+        row.time_s = std::numeric_limits<double>::quiet_NaN();
+        row.scoring_ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count();
+        csv.append(row);
+        rows.push_back(row);
+        files << (i ? ", " : "") << "{\"file\": " << jsonString(maps[i])
+              << ", \"scores\": " << scoreRowJson(row) << "}";
+        std::cerr << "topoeval: series: " << (i + 1) << "/" << maps.size() << " " << maps[i]
+                  << ": quality " << report.quality << ", coverage " << report.coverage << "\n";
+    }
+    csv.commit();
+    writePngAtomic(out("scores.png"),
+                   drawScorePlot(rows, "maps vs " + fs::path(gt_path).filename().string()), force);
+    const std::string json = "{\n  \"ground_truth\": " + jsonString(gt_path) + ",\n  \"maps\": [" +
+                             files.str() + "]\n}\n";
+    writeFileAtomic(out("report.json"), json, force);
+
+    std::cout << "ground truth  " << gt_path << " (" << gt.format << ")\n";
+    std::cout << "maps          " << maps.size() << "\n";
+    char buf[160];
+    std::snprintf(buf, sizeof(buf), "last          quality %.3f, coverage %.3f, brokenness %d\n",
+                  rows.back().quality, rows.back().coverage, rows.back().brokenness);
+    std::cout << buf;
+    for (const char* name : {"scores.csv", "scores.png", "report.json"})
+        std::cout << "wrote         " << out(name) << "\n";
+    flushStdout();
+    return kExitOk;
+}
+
+}  // namespace mrpt_topoeval::cli

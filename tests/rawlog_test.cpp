@@ -1,0 +1,355 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// Rawlog scoring (doc/rawlog.md): a rawlog simulated from a known office map with perfect
+// odometry must end covered and unbroken; real-data quirks (untimed odometry, unknown objects)
+// are repaired and counted; truncated, empty and non-rawlog files are handled; real logs from
+// ../shared/data when present.
+//
+// The demo's sample in share/mrpt_topoeval/rawlog/ is made by the DISABLED_ test at the end:
+//   build-*/tests/rawlog_test --gtest_also_run_disabled_tests --gtest_filter='*MakeShareSample*'
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt_topoeval/RawlogScorer.h>
+#include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/map_io.h>
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "simulated_rawlog.h"
+#include "synthetic_maps.h"
+#include "test_paths.h"
+
+namespace fs = std::filesystem;
+using namespace mrpt_topoeval;
+using namespace mrpt_topoeval::testing;
+
+namespace
+{
+struct TempDir
+{
+    TempDir() : path(makeTempDir("rawlog")) {}
+    ~TempDir()
+    {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    std::string path;
+};
+
+/** The office map and a path through all of it; shared by the tests (simulated once). */
+const mrpt::maps::COccupancyGridMap2D& office()
+{
+    static const auto g = makeOfficeMap(0.05);
+    return g;
+}
+
+std::vector<mrpt::poses::CPose2D> officePath(double step_m = 0.5)
+{
+    return drivePath(officeWaypoints(), step_m, 20.0);
+}
+
+RawlogScorerOptions everyScans(std::size_t n)
+{
+    RawlogScorerOptions o;
+    o.every_scans = n;
+    return o;
+}
+
+void cutFile(const std::string& path, std::uintmax_t keep) { fs::resize_file(path, keep); }
+}  // namespace
+
+TEST(RawlogScorer, CsvHeaderIsTheDocumentedOne)
+{
+    EXPECT_EQ(scoreCsvHeader(),
+              "step,entry,time_s,scans,vertices,coverage,relative_accuracy,consistency_short,"
+              "consistency_medium,consistency_long,brokenness,quality,scoring_ms");
+    ScoreRow r;
+    r.time_s = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(scoreCsvLine(r), "0,0,,0,0,0.0000,0.0000,0.0000,0.0000,0.0000,0,0.0000,0.0");
+}
+
+TEST(RawlogScorer, PerfectOdometryCoverageRisesAndEndsUnbroken)
+{
+    const TempDir dir;
+    const std::string log = dir.path + "/office.rawlog";
+    const auto poses = officePath();
+    const std::size_t n = writeSimulatedRawlog(log, office(), poses);
+    RawlogScorer scorer(everyScans(60), Parameters());
+    std::vector<ScoreRow> seen;
+    scorer.onSnapshot([&](const Snapshot& s) { seen.push_back(s.row); });
+    const RawlogScoreResult res = scorer.run(log, office());
+
+    EXPECT_EQ(res.stop, RawlogStop::EndOfFile);
+    EXPECT_EQ(res.stats.scans, n);
+    EXPECT_EQ(res.stats.entries, 2 * n);  // nothing lost
+    EXPECT_EQ(res.stats.format, "action-sensoryframe");
+    EXPECT_EQ(res.stats.odometry_stamped, 0u);
+    EXPECT_EQ(res.stats.scans_restamped, 0u);
+    ASSERT_EQ(res.rows.size(), (n + 59) / 60);
+    ASSERT_EQ(seen.size(), res.rows.size());
+    EXPECT_EQ(res.rows.back().scans, n);
+    EXPECT_EQ(res.rows.back().entry, 2 * n - 1);
+    EXPECT_NEAR(res.rows.back().time_s, 0.1 * static_cast<double>(n - 1), 1e-3);
+    for (std::size_t i = 0; i < res.rows.size(); ++i)
+    {
+        std::printf("%s\n", scoreCsvLine(res.rows[i]).c_str());
+        EXPECT_EQ(res.rows[i].step, static_cast<int>(i) + 1);
+        // A growing map of a perfect run never loses much coverage (small skeleton changes).
+        if (i > 0)
+        {
+            EXPECT_GE(res.rows[i].coverage, res.rows[i - 1].coverage - 0.1) << i;
+        }
+    }
+    EXPECT_LT(res.rows.front().coverage, 0.5);
+    EXPECT_GE(res.rows.back().coverage, 0.8);
+    EXPECT_EQ(res.rows.back().brokenness, 0);
+    EXPECT_EQ(res.final_report.brokenness.degree, 0);
+    EXPECT_GT(res.final_grid.getSizeX(), 0u);
+    EXPECT_NEAR(res.final_grid.getResolution(), 0.05, 1e-6);
+    EXPECT_NE(res.effective_slam_ini.find("[MappingApplication]"), std::string::npos);
+}
+
+TEST(RawlogScorer, ObservationFormatGzUntimedOdometryAndUnknownObjects)
+{
+    const TempDir dir;
+    const std::string log = dir.path + "/office_obs.rawlog.gz";
+    SimulatedRawlogOptions sim;
+    sim.observation_format = true;
+    sim.untimed_odometry = true;
+    sim.unknown_objects = true;
+    sim.gzip = true;
+    // A short drive: only the bookkeeping is checked here.
+    auto poses = officePath();
+    poses.resize(120);
+    const std::size_t n = writeSimulatedRawlog(log, office(), poses, sim);
+    RawlogScorer scorer(everyScans(50), Parameters());
+    const RawlogScoreResult res = scorer.run(log, office());
+    EXPECT_EQ(res.stop, RawlogStop::EndOfFile);
+    EXPECT_EQ(res.stats.format, "observations");
+    EXPECT_EQ(res.stats.scans, n);
+    EXPECT_EQ(res.stats.odometry, n);
+    EXPECT_EQ(res.stats.odometry_stamped, n);  // every one got its scan's time
+    EXPECT_EQ(res.stats.unknown_objects, n / 10);
+    EXPECT_EQ(res.stats.entries, 2 * n + n / 10);
+    EXPECT_EQ(res.stats.scans_without_odometry, 0u);
+    EXPECT_EQ(res.rows.size(), 3u);
+}
+
+TEST(RawlogScorer, UntimedActionsAreStampedAndScansWithoutOdometryCounted)
+{
+    const TempDir dir;
+    const std::string log = dir.path + "/untimed.rawlog";
+    SimulatedRawlogOptions sim;
+    sim.untimed_odometry = true;
+    auto poses = officePath();
+    poses.resize(80);
+    const std::size_t n = writeSimulatedRawlog(log, office(), poses, sim);
+    // Two sensory frames with no action before them, and equal timestamps.
+    {
+        mrpt::io::CFileGZOutputStream f;
+        ASSERT_TRUE(f.open(dir.path + "/extra.rawlog", 0));
+        auto ar = mrpt::serialization::archiveFrom(f);
+        for (int i = 0; i < 2; ++i)
+        {
+            auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
+            scan->aperture = static_cast<float>(2 * M_PI);
+            scan->maxRange = 12.0f;
+            office().laserScanSimulator(*scan, poses.back(), 0.5f, 361);
+            scan->timestamp = mrpt::Clock::fromDouble(1.0);  // before every other scan
+            mrpt::obs::CSensoryFrame sf;
+            sf.insert(scan);
+            ar << sf;
+        }
+    }
+    {
+        std::ofstream out(log, std::ios::binary | std::ios::app);
+        std::ifstream in(dir.path + "/extra.rawlog", std::ios::binary);
+        out << in.rdbuf();
+    }
+    RawlogScorer scorer(everyScans(1000), Parameters());
+    const RawlogScoreResult res = scorer.run(log, office());
+    EXPECT_EQ(res.stop, RawlogStop::EndOfFile);
+    EXPECT_EQ(res.stats.scans, n + 2);
+    EXPECT_EQ(res.stats.odometry_stamped, n);
+    EXPECT_EQ(res.stats.scans_without_odometry, 2u);
+    EXPECT_EQ(res.stats.scans_restamped, 2u);
+    ASSERT_EQ(res.rows.size(), 1u);  // the final snapshot only
+    EXPECT_EQ(res.rows.back().scans, n + 2);
+}
+
+TEST(RawlogScorer, TruncatedRawlogStopsAndScoresThePartDone)
+{
+    const TempDir dir;
+    const std::string log = dir.path + "/cut.rawlog";
+    auto poses = officePath();
+    poses.resize(150);
+    writeSimulatedRawlog(log, office(), poses);
+    const auto size = fs::file_size(log);
+    cutFile(log, size / 2 + 7);  // inside an entry
+    RawlogScorer scorer(everyScans(50), Parameters());
+    const RawlogScoreResult res = scorer.run(log, office());
+    EXPECT_EQ(res.stop, RawlogStop::Truncated) << res.stop_message;
+    EXPECT_GT(res.stats.scans, 60u);
+    EXPECT_LT(res.stats.scans, 90u);
+    EXPECT_EQ(res.stop_entry, res.stats.entries);
+    EXPECT_NE(res.stop_message.find(log), std::string::npos);
+    EXPECT_NE(res.stop_message.find("entry " + std::to_string(res.stop_entry)), std::string::npos)
+        << res.stop_message;
+    ASSERT_FALSE(res.rows.empty());
+    EXPECT_EQ(res.rows.back().scans, res.stats.scans);  // the part done was scored
+}
+
+TEST(RawlogScorer, StopFlagInterruptsAndScoresThePartDone)
+{
+    const TempDir dir;
+    const std::string log = dir.path + "/stop.rawlog";
+    auto poses = officePath();
+    poses.resize(100);
+    writeSimulatedRawlog(log, office(), poses);
+    std::atomic<bool> stop{false};
+    RawlogScorer scorer(everyScans(30), Parameters());
+    // Set from the snapshot callback, as a signal handler would between two entries.
+    scorer.onSnapshot([&](const Snapshot&) { stop = true; });
+    const RawlogScoreResult res = scorer.run(log, office(), &stop);
+    EXPECT_EQ(res.stop, RawlogStop::Interrupted);
+    EXPECT_EQ(res.stats.scans, 30u);
+    EXPECT_EQ(res.rows.size(), 1u);  // the snapshot at 30 scans is the final one
+}
+
+TEST(RawlogScorer, EmptyMissingAndNonRawlogFilesAreBadInput)
+{
+    const TempDir dir;
+    RawlogScorer scorer(everyScans(10), Parameters());
+    const std::string empty = dir.path + "/empty.rawlog";
+    std::ofstream(empty).close();
+    const std::string text = dir.path + "/text.rawlog";
+    std::ofstream(text) << "this is not a rawlog\n";
+    for (const std::string& path : {empty, text, dir.path + "/missing.rawlog", dir.path})
+    {
+        try
+        {
+            scorer.run(path, office());
+            ADD_FAILURE() << path << " was accepted";
+        }
+        catch (const InputError& e)
+        {
+            EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(RawlogScorer, SlamConfigurationIsMrptsOwn)
+{
+    const TempDir dir;
+    // An icp-slam INI as MRPT's demo ships it: no grid, app-only keys: works unchanged.
+    const std::string ini = dir.path + "/icp-slam.ini";
+    std::ofstream(ini) << "[MappingApplication]\nrawlog_file=x.rawlog\nrawlog_offset=4\n"
+                          "logOutput_dir=out\nLOG_FREQUENCY=5\ninsertionLinDistance=0.8\n"
+                          "pointsMap_count=1\noccupancyGrid_count=0\n[ICP]\nmaxIterations=50\n";
+    const std::string log = dir.path + "/short.rawlog";
+    auto poses = officePath();
+    poses.resize(40);
+    writeSimulatedRawlog(log, office(), poses);
+    RawlogScorerOptions o = everyScans(100);
+    o.slam_config_file = ini;
+    RawlogScorer scorer(o, Parameters());
+    const RawlogScoreResult res = scorer.run(log, office());
+    EXPECT_EQ(res.stats.skipped_before_offset, 4u);
+    EXPECT_EQ(res.stats.scans, 38u);
+    EXPECT_NEAR(res.final_grid.getResolution(), 0.05, 1e-6);  // the default grid was added
+    // The effective INI reproduces the run when read back by MRPT.
+    mrpt::config::CConfigFileMemory eff(res.effective_slam_ini);
+    EXPECT_DOUBLE_EQ(eff.read_double("MappingApplication", "insertionLinDistance", 0.0), 0.8);
+    EXPECT_EQ(eff.read_int("ICP", "maxIterations", 0), 50);
+    EXPECT_NEAR(eff.read_double("ICP", "thresholdAng_DEG", 0.0), 0.15, 1e-6);
+    EXPECT_EQ(eff.read_int("MappingApplication", "rawlog_offset", 0), 4);
+    ASSERT_FALSE(res.messages.empty());
+    EXPECT_NE(res.messages.front().find("no occupancy grid"), std::string::npos);
+
+    o.slam_config_file = dir.path + "/missing.ini";
+    RawlogScorer bad(o, Parameters());
+    EXPECT_THROW(bad.run(log, office()), InputError);
+}
+
+TEST(RawlogScorer, PlotHasItsSize)
+{
+    std::vector<ScoreRow> rows(3);
+    for (int i = 0; i < 3; ++i)
+    {
+        rows[i].time_s = 10.0 * i;
+        rows[i].coverage = 0.3 * i;
+    }
+    const auto img = drawScorePlot(rows, "test");
+    EXPECT_EQ(img.getWidth(), 960u);
+    EXPECT_EQ(img.getHeight(), 540u);
+    EXPECT_EQ(drawScorePlot({}, "empty").getWidth(), 960u);
+}
+
+// ------------------------------------------------------------------ real data (when present)
+
+TEST(RawlogScorerRealData, DrivingInOfficeAgainstGh25)
+{
+    const auto log = sharedDataFile("rawlogs/driving_in_office.rawlog");
+    const auto gt = sharedDataFile("rawlogs/gh25_gt_trinary_res0.05.yaml");
+    if (!log || !gt) GTEST_SKIP() << "../shared/data/rawlogs not present";
+    const auto gt_map = loadMap(*gt);
+    RawlogScorer scorer(everyScans(200), Parameters());
+    std::size_t callbacks = 0;
+    scorer.onSnapshot([&](const Snapshot&) { ++callbacks; });
+    const RawlogScoreResult res = scorer.run(*log, gt_map.grid);
+    EXPECT_EQ(res.stop, RawlogStop::EndOfFile);
+    EXPECT_GT(res.stats.scans, 1100u);
+    EXPECT_EQ(res.rows.size(), (res.stats.scans + 199) / 200);
+    EXPECT_EQ(callbacks, res.rows.size());
+    std::printf("driving_in_office: %zu scans, final %s\n", res.stats.scans,
+                scoreCsvLine(res.rows.back()).c_str());
+}
+
+TEST(RawlogScorerRealData, IntelWithUntimedActionsRunsToTheEnd)
+{
+    const auto log = sharedDataFile("rawlogs/intel.rawlog");
+    const auto gt = sharedDataFile("radish/intel-corrected_ref.yaml");
+    if (!log || !gt) GTEST_SKIP() << "../shared/data not present";
+    const auto gt_map = loadMap(*gt);
+    RawlogScorerOptions o = everyScans(100000);  // the final snapshot only
+    // The whole log takes ~13 s of SLAM: the test reads its first 1200 entries (the CLI reads
+    // everything); the untimed actions are at the very start.
+    o.max_entries = 1200;
+    RawlogScorer scorer(o, Parameters());
+    const RawlogScoreResult res = scorer.run(*log, gt_map.grid);
+    EXPECT_EQ(res.stop, RawlogStop::MaxEntries);
+    EXPECT_EQ(res.stats.entries, 1200u);
+    EXPECT_GT(res.stats.odometry_stamped, 500u);
+    EXPECT_EQ(res.rows.size(), 1u);
+}
+
+// ------------------------------------------------------------------ the demo's sample
+
+/** Writes share/mrpt_topoeval/rawlog/: the office map as a ROS map (PNG + YAML) and a
+ * simulated gz rawlog of about 300 scans with perfect odometry. Run explicitly (see the top
+ * of this file); the files are committed. */
+TEST(RawlogScorer, DISABLED_MakeShareSample)
+{
+    const std::string dir = shareDir() + "/rawlog";
+    fs::create_directories(dir);
+    const auto& g = office();
+    ASSERT_TRUE(g.saveAsBitmapFile(dir + "/office_gt.png"));
+    std::ofstream(dir + "/office_gt.yaml")
+        << "image: office_gt.png\nresolution: 0.05\norigin: [" << g.getXMin() << ", " << g.getYMin()
+        << ", 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+    SimulatedRawlogOptions sim;
+    sim.gzip = true;
+    const auto poses = drivePath(officeWaypoints(), 0.9, 30.0);
+    const std::size_t n = writeSimulatedRawlog(dir + "/office_sim.rawlog.gz", g, poses, sim);
+    std::printf("wrote %s: %zu scans\n", dir.c_str(), n);
+    // The sample must be worth a demo: covered and unbroken.
+    RawlogScorer scorer(everyScans(50), Parameters());
+    const auto res =
+        scorer.run(dir + "/office_sim.rawlog.gz", loadMap(dir + "/office_gt.yaml").grid);
+    EXPECT_GE(res.rows.back().coverage, 0.8);
+    EXPECT_EQ(res.rows.back().brokenness, 0);
+}
