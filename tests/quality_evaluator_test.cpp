@@ -3,6 +3,8 @@
 // broken once, twice and three times by known rotations, cropped, or of another building.
 
 #include <gtest/gtest.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/drawing.h>
@@ -241,4 +243,20 @@ TEST(QualityEvaluator, RealHousePairsAreReportedWithoutNaN)
         EXPECT_GE(r.coverage, 0.0);
         EXPECT_LE(r.coverage, 1.0);
     }
+}
+
+// Writes the campus and its broken copies as MRPT .gridmap.gz files for the pictures in
+// doc/quality.md: TOPOEVAL_DOC_DIR=folder ./quality_evaluator_test
+// --gtest_also_run_disabled_tests --gtest_filter=*WriteDocMaps
+TEST(QualityEvaluator, DISABLED_WriteDocMaps)
+{
+    const char* dir = std::getenv("TOPOEVAL_DOC_DIR");
+    ASSERT_NE(dir, nullptr) << "set TOPOEVAL_DOC_DIR";
+    auto save = [&](const COccupancyGridMap2D& g, const std::string& name)
+    {
+        mrpt::io::CFileGZOutputStream f(std::string(dir) + "/" + name + ".gridmap.gz");
+        mrpt::serialization::archiveFrom(f) << g;
+    };
+    save(makeCampusMap(), "campus");
+    for (int n = 1; n <= 3; ++n) save(brokenCampus(n), "campus_broken_" + std::to_string(n));
 }
