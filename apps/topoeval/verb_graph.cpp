@@ -9,9 +9,6 @@
 #include <mrpt_topoeval/output.h>
 
 #include <algorithm>
-#include <cctype>
-#include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -22,6 +19,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "cli_options.h"
 
 namespace fs = std::filesystem;
 
@@ -29,37 +27,18 @@ namespace mrpt_topoeval::cli
 {
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-std::string fmt(const char* format, double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), format, v);
-    return buf;
-}
-
 // Pictures stay below ~64 megapixels by default: 2 px per cell, 1 for big maps.
 constexpr int kLargeMapCells = 4000;
 
-/** The graph builder's steps in pipeline order for the summary; steps not listed follow
- * alphabetically, so a new step still shows up. */
+/** The graph builder's steps in pipeline order for the summary, the builder's total last. */
 std::vector<std::pair<std::string, double>> orderedTimings(const std::map<std::string, double>& t)
 {
     static const std::vector<std::string> kOrder = {
         "load_map",  "classify",          "voronoi", "chains",    "prune",
         "alpha_cut", "largest_component", "join",    "attributes"};
-    std::vector<std::pair<std::string, double>> out;
-    for (const auto& name : kOrder)
-        if (const auto it = t.find(name); it != t.end()) out.emplace_back(*it);
-    for (const auto& kv : t)
-        if (kv.first != "total" &&
-            std::find(kOrder.begin(), kOrder.end(), kv.first) == kOrder.end())
-            out.emplace_back(kv);
+    std::map<std::string, double> steps = t;
+    steps.erase("total");
+    auto out = cli::orderedTimings(steps, kOrder);
     if (const auto it = t.find("total"); it != t.end()) out.emplace_back("build total", it->second);
     return out;
 }
@@ -113,13 +92,6 @@ std::string stepPicturePath(const std::string& dir, std::size_t index)
     return (fs::path(dir) / (prefix + buildSteps()[index] + ".png")).string();
 }
 
-bool endsWithPng(const std::string& path)
-{
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return ext == ".png";
-}
 }  // namespace
 
 int verbGraph(int argc, char** argv)
@@ -135,7 +107,8 @@ int verbGraph(int argc, char** argv)
         "codes: 0 ok, 1 internal error, 2 bad input or usage, 3 output error.");
     TCLAP::CmdLine& cmd = cl.cmd();
     // Declared in reverse order of the usage line (TCLAP lists the last added first).
-    TCLAP::SwitchArg force_arg("f", "force", "Replace existing output files.", cmd);
+    StandardOptions opts(cl);
+    opts.addForce();
     TCLAP::SwitchArg no_ids_arg("", "no-ids", "Do not write vertex ids in the pictures.", cmd);
     TCLAP::ValueArg<std::string> steps_arg(
         "", "steps",
@@ -148,18 +121,10 @@ int verbGraph(int argc, char** argv)
                                    "(default: 2; 1 for maps over " +
                                        std::to_string(kLargeMapCells) + " cells wide or high).",
                                    false, 0, "N", cmd);
-    TCLAP::ValueArg<std::string> image_arg(
-        "i", "image", "Draw the graph over the map into this PNG file.", false, "", "OUT.png", cmd);
-    TCLAP::ValueArg<std::string> json_arg("j", "json", "Write the graph as JSON to this file.",
-                                          false, "", "OUT.json", cmd);
-    TCLAP::ValueArg<double> res_arg(
-        "r", "resolution",
-        "Cell size for plain images and .simplemap files [m/cell]; overrides [MapLoad] "
-        "resolution_m (default 0.05).",
-        false, 0.0, "R", cmd);
-    TCLAP::ValueArg<std::string> config_arg(
-        "c", "config", "Parameters from this INI file (see 'topoeval config').", false, "", "F.ini",
-        cmd);
+    opts.addImage("Draw the graph over the map into this PNG file.");
+    opts.addJson("Write the graph as JSON to this file.");
+    opts.addResolution();
+    opts.addConfig();
     TCLAP::UnlabeledValueArg<std::string> map_arg(
         "MAP",
         "The map: ROS map_server .yaml, image (.png .pgm .bmp .jpg), MRPT .gridmap[.gz] or "
@@ -169,13 +134,10 @@ int verbGraph(int argc, char** argv)
 
     const std::string map_path = map_arg.getValue();
     if (map_path.empty()) throw cl.usageError("missing the MAP argument");
-    const std::string json_path = json_arg.getValue();
-    const std::string image_path = image_arg.getValue();
-    const bool force = force_arg.getValue();
-    if (json_arg.isSet() && json_path.empty()) throw cl.usageError("--json needs a file name");
-    if (image_arg.isSet() && image_path.empty()) throw cl.usageError("--image needs a file name");
-    if (!image_path.empty() && !endsWithPng(image_path))
-        throw cl.usageError("--image " + image_path + ": pictures are PNG; use a .png file name");
+    const std::string json_path = opts.json();
+    const std::string image_path = opts.image();
+    const bool force = opts.force();
+    opts.checkJsonImage();
     if (scale_arg.isSet() && (scale_arg.getValue() < 1 || scale_arg.getValue() > 8))
         throw cl.usageError("--image-scale " + std::to_string(scale_arg.getValue()) +
                             " violates 1 <= N <= 8");
@@ -187,31 +149,21 @@ int verbGraph(int argc, char** argv)
             step_paths.push_back(stepPicturePath(steps_dir, i));
 
     // No two outputs may name the same file.
-    std::vector<std::pair<std::string, std::string>> outputs;  // (option, file)
-    if (!json_path.empty()) outputs.emplace_back("--json", json_path);
-    if (!image_path.empty()) outputs.emplace_back("--image", image_path);
+    OutputList outputs = opts.outputs();
     for (const auto& p : step_paths) outputs.emplace_back("--steps", p);
-    for (std::size_t i = 0; i < outputs.size(); ++i)
-        for (std::size_t k = i + 1; k < outputs.size(); ++k)
-            if (fs::absolute(outputs[i].second).lexically_normal() ==
-                fs::absolute(outputs[k].second).lexically_normal())
-                throw cl.usageError(outputs[i].first + " and " + outputs[k].first +
-                                    " name the same file " + outputs[i].second);
+    checkDistinctOutputs(cl, outputs);
 
-    const Parameters params =
-        loadParameters(config_arg.getValue(),
-                       res_arg.isSet() ? std::optional<double>(res_arg.getValue()) : std::nullopt);
+    const Parameters params = opts.parameters();
 
     // Refuse unwritable outputs now rather than after the work.
-    const std::vector<std::string> inputs = {map_path, config_arg.getValue()};
+    const std::vector<std::string> inputs = {map_path, opts.config()};
     std::error_code ec;
     if (!steps_dir.empty() && fs::exists(steps_dir, ec) && !fs::is_directory(steps_dir, ec))
         throw OutputError("--steps " + steps_dir + ": is not a folder");
     for (const auto& out : outputs) checkOutputPath(out.second, force, inputs);
 
-    auto t0 = Clock::now();
-    const LoadedMap lm = loadMap(map_path, params.map_load);
-    const double load_ms = msSince(t0);
+    double load_ms = 0.0;
+    const LoadedMap lm = loadMapTimed(map_path, params.map_load, load_ms);
 
     // --steps: keep the graph of each step (smaller than its picture); drawn after the build.
     std::vector<TopologyGraph> step_graphs(step_paths.size());
@@ -245,7 +197,7 @@ int verbGraph(int argc, char** argv)
     mrpt::img::CImage picture;
     if (!image_path.empty())
     {
-        t0 = Clock::now();
+        const auto t0 = Clock::now();
         picture = drawTopologyGraph(lm.grid, graph, draw);
         stats.timing_ms["draw"] = msSince(t0);
     }
@@ -254,7 +206,7 @@ int verbGraph(int argc, char** argv)
     std::vector<mrpt::img::CImage> step_pictures;
     if (!step_paths.empty())
     {
-        t0 = Clock::now();
+        const auto t0 = Clock::now();
         for (const TopologyGraph& g : step_graphs)
             step_pictures.push_back(drawTopologyGraph(lm.grid, g, draw));
         stats.timing_ms["draw_steps"] = msSince(t0);

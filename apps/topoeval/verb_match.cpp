@@ -12,10 +12,6 @@
 #include <mrpt_topoeval/output.h>
 
 #include <algorithm>
-#include <cctype>
-#include <chrono>
-#include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <map>
 #include <string>
@@ -23,35 +19,12 @@
 #include <vector>
 
 #include "cli_common.h"
-
-namespace fs = std::filesystem;
+#include "cli_options.h"
 
 namespace mrpt_topoeval::cli
 {
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-std::string fmt(const char* format, double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), format, v);
-    return buf;
-}
-
-bool endsWithPng(const std::string& path)
-{
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return ext == ".png";
-}
-
 /** One side of the match: its map file and Topology Graph. */
 struct Side
 {
@@ -64,10 +37,8 @@ struct Side
 Side loadSide(const std::string& path, const std::string& role, const Parameters& params,
               std::map<std::string, double>& timing_ms)
 {
-    auto t0 = Clock::now();
-    Side s{loadMap(path, params.map_load), {}};
-    timing_ms["load_" + role] = msSince(t0);
-    t0 = Clock::now();
+    Side s{loadMapTimed(path, params.map_load, timing_ms["load_" + role]), {}};
+    const auto t0 = Clock::now();
     s.graph = buildTopologyGraph(s.map.grid, params.graph);
     s.graph.map.file = s.map.file;
     timing_ms["graph_" + role] = msSince(t0);
@@ -79,8 +50,7 @@ Side loadSide(const std::string& path, const std::string& role, const Parameters
     return s;
 }
 
-/** The run's steps in pipeline order for the summary; steps not listed follow
- * alphabetically, so a new step still shows up. */
+/** The run's steps in pipeline order for the summary. */
 std::vector<std::pair<std::string, double>> orderedTimings(const std::map<std::string, double>& t)
 {
     static const std::vector<std::string> kOrder = {"load_ground_truth",
@@ -95,12 +65,7 @@ std::vector<std::pair<std::string, double>> orderedTimings(const std::map<std::s
                                                     "match",
                                                     "draw",
                                                     "total"};
-    std::vector<std::pair<std::string, double>> out;
-    for (const auto& name : kOrder)
-        if (const auto it = t.find(name); it != t.end()) out.emplace_back(*it);
-    for (const auto& kv : t)
-        if (std::find(kOrder.begin(), kOrder.end(), kv.first) == kOrder.end()) out.emplace_back(kv);
-    return out;
+    return cli::orderedTimings(t, kOrder);
 }
 
 void printSide(std::ostream& os, const char* label, const Side& s)
@@ -130,14 +95,7 @@ void printSummary(std::ostream& os, const Side& gt, const Side& map, SimilarityM
             os << (i ? ", " : "") << match.isomorphism_sizes[i];
     }
     os << "\n";
-    os << "time [ms]     ";
-    bool first = true;
-    for (const auto& [step, ms] : orderedTimings(timing_ms))
-    {
-        os << (first ? "" : ", ") << step << " " << fmt("%.1f", ms);
-        first = false;
-    }
-    os << "\n";
+    os << "time [ms]     " << timingList(orderedTimings(timing_ms)) << "\n";
     for (const auto& w : written) os << "wrote         " << w << "\n";
 }
 }  // namespace
@@ -156,81 +114,27 @@ int verbMatch(int argc, char** argv)
         "for neighbour growing. GT and MAP may be the same file. Existing files are never "
         "replaced without --force; outputs are written only after everything succeeded. Exit "
         "codes: 0 ok, 1 internal error, 2 bad input or usage, 3 output error.");
-    TCLAP::CmdLine& cmd = cl.cmd();
+    StandardOptions opts(cl);
     // Declared in reverse order of the usage line (TCLAP lists the last added first).
-    TCLAP::SwitchArg force_arg("f", "force", "Replace existing output files.", cmd);
-    TCLAP::ValueArg<std::string> image_arg("i", "image",
-                                           "Draw both maps and the match lines into this PNG file.",
-                                           false, "", "OUT.png", cmd);
-    TCLAP::ValueArg<std::string> json_arg("j", "json", "Write the match as JSON to this file.",
-                                          false, "", "OUT.json", cmd);
-    TCLAP::ValueArg<int> threads_arg(
-        "", "threads",
-        "Worker threads for ICP similarity, 0 = all cores; overrides [VertexSimilarity] "
-        "threads. Results do not depend on it.",
-        false, 0, "N", cmd);
-    TCLAP::ValueArg<std::string> similarity_arg(
-        "s", "similarity",
-        "Vertex similarity: 'attributes' (fast) or 'icp' (obstacles around each vertex aligned "
-        "by ICP); overrides [VertexSimilarity] mode (default attributes).",
-        false, "", "attributes|icp", cmd);
-    TCLAP::ValueArg<double> res_arg(
-        "r", "resolution",
-        "Cell size for plain images and .simplemap files [m/cell]; overrides [MapLoad] "
-        "resolution_m (default 0.05).",
-        false, 0.0, "R", cmd);
-    TCLAP::ValueArg<std::string> config_arg(
-        "c", "config", "Parameters from this INI file (see 'topoeval config').", false, "", "F.ini",
-        cmd);
-    // One argument for both files: TCLAP allows a single optional unlabeled argument, and
-    // checking the count ourselves names what is missing.
-    TCLAP::UnlabeledMultiArg<std::string> maps_arg(
-        "GT_MAP",
-        "Exactly two maps: the ground truth, then the map to evaluate. ROS map_server .yaml, "
-        "image (.png .pgm .bmp .jpg), MRPT .gridmap[.gz] or .simplemap[.gz].",
-        false, "GT MAP", cmd);
+    opts.addForce();
+    opts.addImage("Draw both maps and the match lines into this PNG file.");
+    opts.addJson("Write the match as JSON to this file.");
+    opts.addThreads();
+    opts.addSimilarity();
+    opts.addResolution();
+    opts.addConfig();
+    opts.addGtAndMap();
     if (const auto done = cl.parse(argc, argv)) return *done;
 
-    const std::vector<std::string>& maps = maps_arg.getValue();
-    if (maps.empty()) throw cl.usageError("missing the GT and MAP arguments");
-    if (maps.size() == 1) throw cl.usageError("missing the MAP argument");
-    if (maps.size() > 2)
-        throw cl.usageError("expected two maps (GT MAP), got " + std::to_string(maps.size()) +
-                            "; unexpected '" + maps[2] + "'");
-    const std::string gt_path = maps[0], map_path = maps[1];
-    if (gt_path.empty()) throw cl.usageError("the GT argument is empty");
-    if (map_path.empty()) throw cl.usageError("the MAP argument is empty");
-    const std::string json_path = json_arg.getValue();
-    const std::string image_path = image_arg.getValue();
-    const bool force = force_arg.getValue();
-    if (json_arg.isSet() && json_path.empty()) throw cl.usageError("--json needs a file name");
-    if (image_arg.isSet() && image_path.empty()) throw cl.usageError("--image needs a file name");
-    if (!image_path.empty() && !endsWithPng(image_path))
-        throw cl.usageError("--image " + image_path + ": pictures are PNG; use a .png file name");
-    if (!json_path.empty() && !image_path.empty() &&
-        fs::absolute(json_path).lexically_normal() == fs::absolute(image_path).lexically_normal())
-        throw cl.usageError("--json and --image name the same file " + json_path);
-    // The same bounds as [VertexSimilarity] threads, reported as the option the user typed.
-    if (threads_arg.isSet() && (threads_arg.getValue() < 0 || threads_arg.getValue() > 256))
-        throw cl.usageError("--threads " + std::to_string(threads_arg.getValue()) +
-                            " violates 0 <= N <= 256");
-
-    const std::string similarity_mode = similarity_arg.getValue();
-    if (similarity_arg.isSet() && similarity_mode != "attributes" && similarity_mode != "icp")
-        throw cl.usageError("--similarity '" + similarity_mode +
-                            "' is not one of: attributes, icp");
-
-    Parameters params =
-        loadParameters(config_arg.getValue(),
-                       res_arg.isSet() ? std::optional<double>(res_arg.getValue()) : std::nullopt);
-    if (similarity_arg.isSet()) params.similarity.mode = similarityModeFromString(similarity_mode);
-    if (threads_arg.isSet()) params.similarity.threads = threads_arg.getValue();
-    params.validate();
+    const auto [gt_path, map_path] = opts.gtAndMap();
+    const std::string json_path = opts.json();
+    const std::string image_path = opts.image();
+    opts.checkJsonImage();
+    checkDistinctOutputs(cl, opts.outputs());
+    const Parameters params = opts.parameters();
 
     // Refuse unwritable outputs now rather than after the work.
-    const std::vector<std::string> inputs = {gt_path, map_path, config_arg.getValue()};
-    if (!json_path.empty()) checkOutputPath(json_path, force, inputs);
-    if (!image_path.empty()) checkOutputPath(image_path, force, inputs);
+    opts.checkOutputPaths({gt_path, map_path, opts.config()});
 
     std::map<std::string, double> timing_ms;
     const Side gt = loadSide(gt_path, "ground_truth", params, timing_ms);
@@ -267,17 +171,7 @@ int verbMatch(int argc, char** argv)
     std::string json_text;
     if (!json_path.empty()) json_text = matchToJson(gt.graph, map.graph, match, &timing_ms);
 
-    std::vector<std::string> written;
-    if (!json_path.empty())
-    {
-        writeFileAtomic(json_path, json_text, force);
-        written.push_back(json_path);
-    }
-    if (!image_path.empty())
-    {
-        writePngAtomic(image_path, picture, force);
-        written.push_back(image_path);
-    }
+    const std::vector<std::string> written = opts.writeOutputs(json_text, picture);
 
     printSummary(std::cout, gt, map, params.similarity.mode, match, timing_ms, written);
     flushStdout();

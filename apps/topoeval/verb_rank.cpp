@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <atomic>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -27,6 +26,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "cli_options.h"
 
 namespace fs = std::filesystem;
 
@@ -34,13 +34,6 @@ namespace mrpt_topoeval::cli
 {
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
 /** One map's outcome: a report, or the reason there is none. */
 struct MapResult
 {
@@ -317,29 +310,18 @@ int verbRank(int argc, char** argv)
         "internal error, 2 bad input or usage, 3 output error.");
     TCLAP::CmdLine& cmd = cl.cmd();
     // Declared in reverse order of the usage line (TCLAP lists the last added first).
-    TCLAP::SwitchArg force_arg("f", "force", "Replace an existing CSV file.", cmd);
+    StandardOptions opts(cl);
+    opts.addForce("Replace an existing CSV file.");
     TCLAP::ValueArg<std::string> csv_arg("", "csv",
                                          "Write the table as CSV (header row first) to this file.",
                                          false, "", "OUT.csv", cmd);
-    TCLAP::ValueArg<int> threads_arg(
-        "", "threads",
+    opts.addThreads(
         "Threads in all, 0 = all cores; overrides [VertexSimilarity] threads. Up to this many "
         "maps are evaluated at once, and ICP similarity shares what is left. Results do not "
-        "depend on it.",
-        false, 0, "N", cmd);
-    TCLAP::ValueArg<std::string> similarity_arg(
-        "s", "similarity",
-        "Vertex similarity: 'attributes' (fast) or 'icp' (obstacles around each vertex aligned "
-        "by ICP); overrides [VertexSimilarity] mode (default attributes).",
-        false, "", "attributes|icp", cmd);
-    TCLAP::ValueArg<double> res_arg(
-        "r", "resolution",
-        "Cell size for plain images and .simplemap files [m/cell]; overrides [MapLoad] "
-        "resolution_m (default 0.05).",
-        false, 0.0, "R", cmd);
-    TCLAP::ValueArg<std::string> config_arg(
-        "c", "config", "Parameters from this INI file (see 'topoeval config').", false, "", "F.ini",
-        cmd);
+        "depend on it.");
+    opts.addSimilarity();
+    opts.addResolution();
+    opts.addConfig();
     TCLAP::UnlabeledMultiArg<std::string> maps_arg(
         "GT_MAPS",
         "The ground truth, then one or more maps to score. ROS map_server .yaml, image (.png "
@@ -356,25 +338,12 @@ int verbRank(int argc, char** argv)
                                        : "MAP argument " + std::to_string(i) + " is empty");
     const std::string gt_path = args[0];
     const std::string csv_path = csv_arg.getValue();
-    const bool force = force_arg.getValue();
+    const bool force = opts.force();
     if (csv_arg.isSet() && csv_path.empty()) throw cl.usageError("--csv needs a file name");
-    if (threads_arg.isSet() && (threads_arg.getValue() < 0 || threads_arg.getValue() > 256))
-        throw cl.usageError("--threads " + std::to_string(threads_arg.getValue()) +
-                            " violates 0 <= N <= 256");
-    const std::string similarity_mode = similarity_arg.getValue();
-    if (similarity_arg.isSet() && similarity_mode != "attributes" && similarity_mode != "icp")
-        throw cl.usageError("--similarity '" + similarity_mode +
-                            "' is not one of: attributes, icp");
-
-    Parameters params =
-        loadParameters(config_arg.getValue(),
-                       res_arg.isSet() ? std::optional<double>(res_arg.getValue()) : std::nullopt);
-    if (similarity_arg.isSet()) params.similarity.mode = similarityModeFromString(similarity_mode);
-    if (threads_arg.isSet()) params.similarity.threads = threads_arg.getValue();
-    params.validate();
+    const Parameters params = opts.parameters();
 
     std::vector<std::string> inputs = args;
-    inputs.push_back(config_arg.getValue());
+    inputs.push_back(opts.config());
     if (!csv_path.empty()) checkOutputPath(csv_path, force, inputs);
 
     // The ground truth once, shared read-only by every evaluation: nothing to rank without it.

@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "cli_common.h"
+#include "cli_options.h"
 #include "scores_output.h"
 
 namespace fs = std::filesystem;
@@ -49,13 +50,6 @@ struct SigintScope
     SigintScope() : previous(std::signal(SIGINT, onSigint)) { g_stop = false; }
     ~SigintScope() { std::signal(SIGINT, previous == SIG_ERR ? SIG_DFL : previous); }
 };
-
-std::string fmt(const char* format, double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), format, v);
-    return buf;
-}
 
 /** A bar on a terminal, a plain line every few seconds otherwise (logs, CI). */
 class Progress
@@ -149,7 +143,8 @@ int verbRawlog(int argc, char** argv)
     TCLAP::SwitchArg print_slam_arg(
         "", "print-slam-config",
         "Print the default ICP-SLAM configuration (an icp-slam INI) and exit.", cmd);
-    TCLAP::SwitchArg force_arg("f", "force", "Replace existing output files.", cmd);
+    StandardOptions std_opts(cl);
+    std_opts.addForce();
     TCLAP::ValueArg<std::size_t> max_entries_arg(
         "", "max-entries", "Read at most this many rawlog entries (0 = all).", false, 0, "N", cmd);
     TCLAP::SwitchArg snapshots_arg(
@@ -160,9 +155,7 @@ int verbRawlog(int argc, char** argv)
     TCLAP::ValueArg<std::size_t> every_arg(
         "e", "every", "Score a snapshot every N scans, and at the end (default 100).", false, 100,
         "N", cmd);
-    TCLAP::ValueArg<std::string> config_arg(
-        "c", "config", "topoeval parameters from this INI file (see 'topoeval config').", false, "",
-        "F.ini", cmd);
+    std_opts.addConfig("topoeval parameters from this INI file (see 'topoeval config').");
     TCLAP::ValueArg<std::string> slam_arg(
         "s", "slam-config",
         "ICP-SLAM configuration: an icp-slam INI ([MappingApplication], [ICP]); default: "
@@ -188,9 +181,9 @@ int verbRawlog(int argc, char** argv)
     if (every_arg.getValue() < 1) throw cl.usageError("--every 0 violates N >= 1");
     const std::string dir = out_arg.getValue();
     if (dir.empty()) throw cl.usageError("--out needs a folder name");
-    const bool force = force_arg.getValue();
+    const bool force = std_opts.force();
 
-    const Parameters params = loadParameters(config_arg.getValue(), std::nullopt);
+    const Parameters params = std_opts.parameters();
     if (!fs::exists(rawlog_path)) throw InputError(rawlog_path + ": no such file");
     const LoadedMap gt = loadMap(gt_path, params.map_load);
 
@@ -279,7 +272,7 @@ int verbRawlog(int argc, char** argv)
        << ", \"max_entry_bytes\": " << opts.max_entry_bytes
        << ", \"slam_config_file\": " << jsonString(opts.slam_config_file)
        << ", \"slam_ini\": " << jsonString(res.effective_slam_ini)
-       << ", \"topoeval_config_file\": " << jsonString(config_arg.getValue())
+       << ", \"topoeval_config_file\": " << jsonString(std_opts.config())
        << ", \"topoeval_ini\": " << jsonString(topo_ini.getContent()) << "}"
        << ",\n  \"final_scores\": " << (res.rows.empty() ? "null" : scoreRowJson(res.rows.back()))
        << ",\n  \"final_report\": "

@@ -9,13 +9,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "cli_common.h"
+#include "cli_options.h"
 #include "scores_output.h"
 
 namespace fs = std::filesystem;
@@ -101,17 +101,12 @@ int verbSeries(int argc, char** argv)
         "replaced without --force. Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 "
         "output error.");
     TCLAP::CmdLine& cmd = cl.cmd();
-    TCLAP::SwitchArg force_arg("f", "force", "Replace existing output files.", cmd);
+    StandardOptions opts(cl);
+    opts.addForce();
     TCLAP::ValueArg<std::string> out_arg("o", "out", "Output folder (default: series-scores).",
                                          false, "series-scores", "DIR", cmd);
-    TCLAP::ValueArg<double> res_arg(
-        "r", "resolution",
-        "Cell size for plain images and .simplemap files [m/cell]; overrides [MapLoad] "
-        "resolution_m (default 0.05).",
-        false, 0.0, "R", cmd);
-    TCLAP::ValueArg<std::string> config_arg(
-        "c", "config", "Parameters from this INI file (see 'topoeval config').", false, "", "F.ini",
-        cmd);
+    opts.addResolution();
+    opts.addConfig();
     TCLAP::UnlabeledMultiArg<std::string> maps_arg(
         "GT_MAPS", "The ground truth, then the maps in time order (files or folders).", false,
         "GT MAP...", cmd);
@@ -137,10 +132,8 @@ int verbSeries(int argc, char** argv)
     }
     const std::string dir = out_arg.getValue();
     if (dir.empty()) throw cl.usageError("--out needs a folder name");
-    const bool force = force_arg.getValue();
-    const Parameters params =
-        loadParameters(config_arg.getValue(),
-                       res_arg.isSet() ? std::optional<double>(res_arg.getValue()) : std::nullopt);
+    const bool force = opts.force();
+    const Parameters params = opts.parameters();
     const LoadedMap gt = loadMap(gt_path, params.map_load);
 
     prepareOutputFolder(dir, {"scores.csv", "scores.png", "report.json"}, force);
@@ -151,15 +144,13 @@ int verbSeries(int argc, char** argv)
     for (std::size_t i = 0; i < maps.size(); ++i)
     {
         const LoadedMap m = loadMap(maps[i], params.map_load);
-        const auto t0 = std::chrono::steady_clock::now();
+        const auto t0 = Clock::now();
         const QualityReport report = evaluate(gt.grid, m.grid, params);
         ScoreRow row = scoreRowFromReport(report);
         row.step = static_cast<int>(i) + 1;
         row.entry = numberInName(maps[i], i);
         row.time_s = std::numeric_limits<double>::quiet_NaN();
-        row.scoring_ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                .count();
+        row.scoring_ms = msSince(t0);
         csv.append(row);
         rows.push_back(row);
         files << (i ? ", " : "") << "{\"file\": " << jsonString(maps[i])
