@@ -317,7 +317,7 @@ void GraphEditor::keepLargestComponent()
     }
     for (int v = 0; v < nv; ++v)
         if (m_v[v].alive && comp[v] != best) removeVertex(v);
-    compact();
+    dissolveDegreeTwo();  // rebuilds the storage from what is alive
 }
 
 std::size_t GraphEditor::joinClose(double max_length)
@@ -389,11 +389,5 @@ std::size_t GraphEditor::joinClose(double max_length)
     return removed;
 }
 
-void GraphEditor::compact()
-{
-    // dissolveDegreeTwo() rebuilds the storage from alive vertices and edges; on a graph with
-    // no degree-2 chains it only compacts.
-    dissolveDegreeTwo();
-}
 
 }  // namespace mrpt_topoeval::internal

@@ -95,7 +95,6 @@ public:
 private:
     void removeEdge(int e);
     void removeVertex(int v);
-    void compact();
     static void reverseEdge(Edge& E);
     /** Keeps the first `keep` path points of edge e (a to the cut) and ends it at a new
      * vertex there, detached from the old end b. */
