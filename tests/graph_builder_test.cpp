@@ -354,9 +354,8 @@ TEST(GraphBuilder, EveryVertexAndPathPointLiesOnFreeSpace)
     // point may sit inside a wall or the solid block around the office.
     const auto grid = makeOfficeMap();
     const TopologyGraph g = buildTopologyGraph(grid);
-    auto isFree = [&](const Eigen::Vector2d& p) {
-        return grid.getPos(static_cast<float>(p.x()), static_cast<float>(p.y())) > 0.65f;
-    };
+    auto isFree = [&](const Eigen::Vector2d& p)
+    { return grid.getPos(static_cast<float>(p.x()), static_cast<float>(p.y())) > 0.65f; };
     for (const auto& v : g.vertices) EXPECT_TRUE(isFree(v.position_m)) << "vertex " << v.id;
     for (const auto& e : g.edges)
         for (const auto& p : e.path_m) EXPECT_TRUE(isFree(p)) << "edge " << e.id;

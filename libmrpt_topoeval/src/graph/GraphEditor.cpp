@@ -389,5 +389,4 @@ std::size_t GraphEditor::joinClose(double max_length)
     return removed;
 }
 
-
 }  // namespace mrpt_topoeval::internal
