@@ -20,7 +20,8 @@ std::string consistencyLine(const QualityReport& r)
 {
     std::string s;
     for (const auto& c : r.local_consistency)
-        s += "  " + c.name + " " + (c.pairs ? fmt("%.2f", c.score) : std::string("-"));
+        s += (s.empty() ? "" : "  ") + c.name + " " +
+             (c.pairs ? fmt("%.2f", c.score) : std::string("-"));
     return s;
 }
 }  // namespace
@@ -36,7 +37,7 @@ std::string QualityReport::briefReport() const
     s += "accuracy    relative " + fmt("%.3f", relative_accuracy.rmse_m) + " m rmse (score " +
          fmt("%.2f", relative_accuracy.score) + "), global " + fmt("%.3f", global_accuracy.rmse_m) +
          " m rmse\n";
-    s += "consistency" + consistencyLine(*this) + "\n";
+    s += "consistency " + consistencyLine(*this) + "\n";
     const std::size_t ng = brokenness.groups.size();
     s += "brokenness  " + std::to_string(brokenness.degree) + " (" + std::to_string(ng) +
          (ng == 1 ? " group" : " groups") + ")\n";
