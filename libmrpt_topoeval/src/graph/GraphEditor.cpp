@@ -162,9 +162,15 @@ void GraphEditor::dissolveDegreeTwo()
             }
             out.min_clearance = std::min(out.min_clearance, E.min_clearance);
             const int w = forward ? E.b : E.a;
+            // Stop at an anchor before looking at its edges: a dead end has only inc[0].
+            if (anchor[w])
+            {
+                out.b = w;
+                break;
+            }
             const auto& inc = m_v[w].edges;
             const int next = inc[0] == e ? inc[1] : inc[0];
-            if (anchor[w] || used[next])
+            if (used[next])
             {
                 out.b = w;
                 break;

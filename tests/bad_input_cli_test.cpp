@@ -1,0 +1,314 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// Reliability of the `topoeval` command on bad and degenerate input (issue 6): every run is
+// bounded in time (`timeout`), never ends by a signal, exits with the documented code and one
+// line naming the file, and leaves no output file behind when it fails. Also: results do not
+// depend on the thread count. The file corpus in tests/data/bad_inputs is driven by cli_test;
+// the inputs here are made in code (folders, degenerate maps, cut rawlogs, other classes).
+
+#include <gtest/gtest.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/serialization/CArchive.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "test_paths.h"
+
+namespace fs = std::filesystem;
+using mrpt_topoeval::testing::shareDir;
+using mrpt_topoeval::testing::topoevalBin;
+
+namespace
+{
+/** Longest a single run may take, even under the sanitizers [s]; `timeout` kills it after. */
+constexpr int kRunTimeLimitS = 60;
+
+struct ScopedTempDir
+{
+    explicit ScopedTempDir(const std::string& tag) : path(mrpt_topoeval::testing::makeTempDir(tag))
+    {
+    }
+    ~ScopedTempDir()
+    {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    ScopedTempDir(const ScopedTempDir&) = delete;
+    ScopedTempDir& operator=(const ScopedTempDir&) = delete;
+    const std::string path;
+};
+
+std::string readText(const std::string& path)
+{
+    std::ifstream f(path, std::ios::binary);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+void writeText(const std::string& path, const std::string& text)
+{
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string q(const std::string& s)
+{
+    std::string out = "'";
+    for (const char ch : s) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return out + "'";
+}
+
+bool contains(const std::string& s, const std::string& part)
+{
+    return s.find(part) != std::string::npos;
+}
+
+int lineCount(const std::string& s)
+{
+    int n = 0;
+    for (const char ch : s) n += ch == '\n';
+    return n;
+}
+
+struct RunResult
+{
+    int code = -1;  //!< exit code; 128 + N for signal N; 124 when `timeout` stopped the run
+    std::string out, err;
+};
+
+/** `topoeval ARGS` (already quoted) under `timeout`, stdout and stderr captured. */
+RunResult run(const std::string& args)
+{
+    const ScopedTempDir io("bad_cli_io");
+    const std::string out = io.path + "/out.txt", err = io.path + "/err.txt";
+    // --kill-after: a run that ignores SIGTERM still ends; --preserve-status is not used so
+    // that a hang reads as 124, never as one of our codes.
+    const std::string cmd = "timeout --kill-after=5 " + std::to_string(kRunTimeLimitS) + " " +
+                            q(topoevalBin()) + " " + args + " >" + q(out) + " 2>" + q(err);
+    const int status = std::system(cmd.c_str());
+    RunResult r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    r.out = readText(out);
+    r.err = readText(err);
+    return r;
+}
+
+/** Every file (not folder) under `dir`, recursively, hidden temporary files included.
+ * Folders are left out: `rawlog -o DIR` creates DIR before it reads the rawlog, and an empty
+ * folder is not a partial output. */
+std::vector<std::string> filesUnder(const std::string& dir)
+{
+    std::vector<std::string> names;
+    if (!fs::exists(dir)) return names;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (!e.is_directory()) names.push_back(e.path().string());
+    return names;
+}
+
+/** Exit `code`, one `topoeval: error:` line that contains `must_contain`, no file in `out_dir`. */
+void expectCleanFailure(const RunResult& r, int code, const std::string& must_contain,
+                        const std::string& out_dir)
+{
+    EXPECT_NE(r.code, 124) << "timed out after " << kRunTimeLimitS << " s";
+    EXPECT_LT(r.code, 128) << "ended by signal " << r.code - 128 << ": " << r.err;
+    EXPECT_EQ(r.code, code) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("topoeval: error: ", 0), 0u) << r.err;
+    EXPECT_TRUE(contains(r.err, must_contain)) << "'" << must_contain << "' not in: " << r.err;
+    EXPECT_TRUE(filesUnder(out_dir).empty()) << "an output was left for a failed run";
+}
+
+/** A PGM of `w` x `h` pixels of one grey level and its ROS YAML (trinary, ROS thresholds). */
+std::string writeUniformRosMap(const std::string& dir, const std::string& name, int w, int h,
+                               unsigned char grey)
+{
+    std::string pgm = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
+    pgm.append(static_cast<std::size_t>(w) * h, static_cast<char>(grey));
+    writeText(dir + "/" + name + ".pgm", pgm);
+    const std::string yaml = dir + "/" + name + ".yaml";
+    writeText(yaml, "image: " + name +
+                        ".pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+                        "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+    return yaml;
+}
+
+/** The JSON with the timing (last member) and the thread count (the effective configuration
+ * records what was asked) removed: everything else must be byte-identical. */
+std::string comparable(const std::string& json)
+{
+    const auto at = json.find(",\n  \"timing_ms\": {");
+    std::string head = at == std::string::npos ? json : json.substr(0, at);
+    const std::string key = "\"threads\": ";
+    for (auto k = head.find(key); k != std::string::npos; k = head.find(key, k + 1))
+    {
+        const auto digits = head.find_first_not_of("0123456789", k + key.size());
+        head.replace(k + key.size(), digits - (k + key.size()), "N");
+    }
+    return head;
+}
+
+class BadInputCli : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        if (topoevalBin().empty() || !fs::exists(topoevalBin()))
+            GTEST_SKIP() << "the topoeval command is not built";
+    }
+};
+}  // namespace
+
+TEST_F(BadInputCli, FoldersGivenAsFilesExit2)
+{
+    const ScopedTempDir dir("bad_cli");
+    const std::string folder_map = dir.path + "/folder.yaml", folder_png = dir.path + "/f.png";
+    fs::create_directory(folder_map);
+    fs::create_directory(folder_png);
+    const std::string gt = writeUniformRosMap(dir.path, "gt", 20, 20, 255);
+    const std::string out = dir.path + "/out";
+    fs::create_directory(out);
+    const std::string outputs = " --json " + q(out + "/o.json") + " --image " + q(out + "/o.png");
+
+    expectCleanFailure(run("graph " + q(folder_map) + outputs), 2, folder_map, out);
+    expectCleanFailure(run("graph " + q(folder_png) + outputs), 2, folder_png, out);
+    expectCleanFailure(run("graph " + q(dir.path) + outputs), 2, dir.path, out);
+    expectCleanFailure(run("compare " + q(gt) + " " + q(folder_map) + outputs), 2, folder_map, out);
+    expectCleanFailure(run("match " + q(folder_map) + " " + q(gt) + outputs), 2, folder_map, out);
+    expectCleanFailure(run("graph " + q(gt) + " --config " + q(folder_map) + outputs), 2,
+                       folder_map, out);
+    expectCleanFailure(run("rawlog " + q(folder_map) + " -g " + q(gt) + " -o " + q(out + "/r")), 2,
+                       folder_map, out);
+}
+
+TEST_F(BadInputCli, GridmapOfAnotherClassAndEmptyFilesExit2)
+{
+    const ScopedTempDir dir("bad_cli");
+    const std::string out = dir.path + "/out";
+    fs::create_directory(out);
+    const std::string outputs = " --json " + q(out + "/o.json") + " --image " + q(out + "/o.png");
+
+    // A pose serialized where a grid is expected, plain and gz.
+    const std::string pose_plain = dir.path + "/pose.gridmap";
+    const std::string pose_gz = dir.path + "/pose.gridmap.gz";
+    {
+        mrpt::io::CFileOutputStream f(pose_plain);
+        mrpt::serialization::archiveFrom(f) << mrpt::poses::CPose2D(1, 2, 0.5);
+    }
+    {
+        mrpt::io::CFileGZOutputStream f(pose_gz);
+        mrpt::serialization::archiveFrom(f) << mrpt::poses::CPose2D(1, 2, 0.5);
+    }
+    expectCleanFailure(run("graph " + q(pose_plain) + outputs), 2, pose_plain, out);
+    expectCleanFailure(run("graph " + q(pose_gz) + outputs), 2, pose_gz, out);
+
+    for (const char* name : {"empty.pgm", "empty.bmp", "empty.jpg", "empty.gridmap.gz",
+                             "empty.simplemap.gz", "empty.yml"})
+    {
+        const std::string f = dir.path + "/" + name;
+        writeText(f, "");
+        expectCleanFailure(run("graph " + q(f) + outputs), 2, f, out);
+    }
+    const std::string empty_ini = dir.path + "/empty.ini";
+    writeText(empty_ini, "");
+    // An empty INI is a valid configuration (every key keeps its default).
+    EXPECT_EQ(run("config --check " + q(empty_ini)).code, 0);
+}
+
+TEST_F(BadInputCli, CutRawlogsExit2BeforeTheFirstEntryAnd4After)
+{
+    const std::string sample = shareDir() + "/rawlog/office_sim.rawlog.gz";
+    const std::string gt = shareDir() + "/rawlog/office_gt.yaml";
+    if (!fs::exists(sample) || !fs::exists(gt)) GTEST_SKIP() << "no share/ rawlog sample";
+    const ScopedTempDir dir("bad_cli_rawlog");
+    // The uncompressed sample, so that cuts fall at chosen byte offsets.
+    const std::string plain = dir.path + "/full.rawlog";
+    ASSERT_EQ(std::system(("zcat " + q(sample) + " > " + q(plain)).c_str()), 0);
+    const std::string bytes = readText(plain);
+    ASSERT_GT(bytes.size(), 30000u);
+
+    // Cut inside the first entry: nothing was read, so it is not a rawlog (exit 2), no output.
+    const std::string cut0 = dir.path + "/cut0.rawlog";
+    writeText(cut0, bytes.substr(0, 100));
+    const std::string out0 = dir.path + "/out0";
+    expectCleanFailure(run("rawlog " + q(cut0) + " -g " + q(gt) + " -o " + q(out0)), 2, cut0, out0);
+
+    // Cut after some entries: stopped early (exit 4), the part done written completely, no
+    // temporary file left.
+    const std::string cut = dir.path + "/cut.rawlog";
+    writeText(cut, bytes.substr(0, 30000));
+    const std::string out = dir.path + "/out";
+    const RunResult r = run("rawlog " + q(cut) + " -g " + q(gt) + " -o " + q(out));
+    EXPECT_EQ(r.code, 4) << r.err;
+    EXPECT_TRUE(contains(r.err, cut)) << r.err;
+    EXPECT_TRUE(contains(readText(out + "/report.json"), "\"stop\": \"truncated\""));
+    for (const std::string& f : filesUnder(out))
+        EXPECT_EQ(f.find(".part"), std::string::npos) << "temporary file left: " << f;
+}
+
+TEST_F(BadInputCli, DegenerateMapsGiveEmptyGraphsWithAWarningAndExit0)
+{
+    const ScopedTempDir dir("bad_cli");
+    struct Case
+    {
+        const char* name;
+        int w, h;
+        unsigned char grey;
+        const char* warning;
+    };
+    // 205 is the ROS "unknown" grey: between the thresholds of a trinary map.
+    for (const Case& c : {Case{"one_free", 1, 1, 255, "no obstacles"},
+                          Case{"one_occupied", 1, 1, 0, "no free space"},
+                          Case{"one_unknown", 1, 1, 205, "no obstacles"},
+                          Case{"all_unknown", 60, 40, 205, "no obstacles"},
+                          Case{"all_occupied", 60, 40, 0, "no free space"}})
+    {
+        SCOPED_TRACE(c.name);
+        const std::string map = writeUniformRosMap(dir.path, c.name, c.w, c.h, c.grey);
+        const std::string json = dir.path + "/" + c.name + ".json";
+        const std::string png = dir.path + "/" + c.name + ".png";
+        const RunResult r = run("graph " + q(map) + " --json " + q(json) + " --image " + q(png));
+        EXPECT_EQ(r.code, 0) << r.err;
+        EXPECT_TRUE(contains(r.err, "topoeval: warning: " + map + ": ")) << r.err;
+        EXPECT_TRUE(contains(r.err, c.warning)) << r.err;
+        EXPECT_TRUE(contains(readText(json), "\"vertices\": [],"));
+        EXPECT_EQ(readText(png).substr(0, 4), "\x89PNG");
+
+        // As ground truth and as map of a comparison: nothing matched, coverage 0, exit 0.
+        const std::string report = dir.path + "/" + c.name + ".report.json";
+        const RunResult cmp = run("compare " + q(map) + " " + q(map) + " --json " + q(report) +
+                                  " --image " + q(dir.path + "/" + c.name + ".report.png"));
+        EXPECT_EQ(cmp.code, 0) << cmp.err;
+        EXPECT_TRUE(contains(readText(report), "\"quality\": 0")) << readText(report);
+    }
+}
+
+TEST_F(BadInputCli, CompareJsonDoesNotDependOnTheThreadCount)
+{
+    const std::string maps = shareDir() + "/maps/";
+    const std::string gt = maps + "map_2333d24.yaml", map = maps + "map_6ccdcaa.yaml";
+    for (const auto& f : {gt, map})
+        if (!fs::exists(f)) GTEST_SKIP() << f << " is not there";
+    const ScopedTempDir dir("bad_cli_threads");
+    const auto compare = [&](const std::string& tag, const std::string& extra)
+    {
+        const std::string json = dir.path + "/" + tag + ".json";
+        const RunResult r = run("compare " + q(gt) + " " + q(map) + " --json " + q(json) + extra);
+        EXPECT_EQ(r.code, 0) << tag << ": " << r.err;
+        return readText(json);
+    };
+    // Attributes: one thread against the default (all cores).
+    const std::string one = compare("attr1", " --threads 1");
+    EXPECT_TRUE(contains(one, "\"timing_ms\": {"));
+    EXPECT_EQ(comparable(one), comparable(compare("attr_default", "")));
+    // ICP similarity runs vertex pairs in threads: 1 against 2.
+    const std::string icp1 = compare("icp1", " --similarity icp --threads 1");
+    EXPECT_TRUE(contains(icp1, "\"mode\": \"icp\"")) << icp1.substr(0, 2000);
+    EXPECT_EQ(comparable(icp1), comparable(compare("icp2", " --similarity icp --threads 2")));
+}
