@@ -19,85 +19,32 @@
 #include <string>
 #include <vector>
 
+#include "cli_runner.h"
 #include "test_paths.h"
 
 namespace fs = std::filesystem;
 using mrpt_topoeval::testing::shareDir;
 using mrpt_topoeval::testing::topoevalBin;
 
+using mrpt_topoeval::testing::contains;
+using mrpt_topoeval::testing::lineCount;
+using mrpt_topoeval::testing::readText;
+using mrpt_topoeval::testing::RunResult;
+using mrpt_topoeval::testing::ScopedTempDir;
+using mrpt_topoeval::testing::writeText;
+
 namespace
 {
 /** Longest a single run may take, even under the sanitizers [s]; `timeout` kills it after. */
 constexpr int kRunTimeLimitS = 60;
 
-struct ScopedTempDir
-{
-    explicit ScopedTempDir(const std::string& tag) : path(mrpt_topoeval::testing::makeTempDir(tag))
-    {
-    }
-    ~ScopedTempDir()
-    {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    ScopedTempDir(const ScopedTempDir&) = delete;
-    ScopedTempDir& operator=(const ScopedTempDir&) = delete;
-    const std::string path;
-};
-
-std::string readText(const std::string& path)
-{
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-void writeText(const std::string& path, const std::string& text)
-{
-    std::ofstream(path, std::ios::binary) << text;
-}
-
-std::string q(const std::string& s)
-{
-    std::string out = "'";
-    for (const char ch : s) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return out + "'";
-}
-
-bool contains(const std::string& s, const std::string& part)
-{
-    return s.find(part) != std::string::npos;
-}
-
-int lineCount(const std::string& s)
-{
-    int n = 0;
-    for (const char ch : s) n += ch == '\n';
-    return n;
-}
-
-struct RunResult
-{
-    int code = -1;  //!< exit code; 128 + N for signal N; 124 when `timeout` stopped the run
-    std::string out, err;
-};
+/** `s` quoted for /bin/sh. */
+std::string q(const std::string& s) { return mrpt_topoeval::testing::shellQuote(s); }
 
 /** `topoeval ARGS` (already quoted) under `timeout`, stdout and stderr captured. */
 RunResult run(const std::string& args)
 {
-    const ScopedTempDir io("bad_cli_io");
-    const std::string out = io.path + "/out.txt", err = io.path + "/err.txt";
-    // --kill-after: a run that ignores SIGTERM still ends; --preserve-status is not used so
-    // that a hang reads as 124, never as one of our codes.
-    const std::string cmd = "timeout --kill-after=5 " + std::to_string(kRunTimeLimitS) + " " +
-                            q(topoevalBin()) + " " + args + " >" + q(out) + " 2>" + q(err);
-    const int status = std::system(cmd.c_str());
-    RunResult r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    r.out = readText(out);
-    r.err = readText(err);
-    return r;
+    return mrpt_topoeval::testing::runTopoeval(args, kRunTimeLimitS);
 }
 
 /** Every file (not folder) under `dir`, recursively, hidden temporary files included.

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_runner.h"
 #include "test_paths.h"
 
 namespace fs = std::filesystem;
@@ -22,80 +23,20 @@ using mrpt_topoeval::testing::shareDir;
 using mrpt_topoeval::testing::testsDir;
 using mrpt_topoeval::testing::topoevalBin;
 
+using mrpt_topoeval::testing::contains;
+using mrpt_topoeval::testing::lineCount;
+using mrpt_topoeval::testing::readText;
+using mrpt_topoeval::testing::RunResult;
+using mrpt_topoeval::testing::ScopedTempDir;
+using mrpt_topoeval::testing::writeText;
+
 namespace
 {
-/** A fresh temporary folder, removed with everything in it when the test is done. */
-struct ScopedTempDir
-{
-    explicit ScopedTempDir(const std::string& tag) : path(mrpt_topoeval::testing::makeTempDir(tag))
-    {
-    }
-    ~ScopedTempDir()
-    {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    ScopedTempDir(const ScopedTempDir&) = delete;
-    ScopedTempDir& operator=(const ScopedTempDir&) = delete;
-    const std::string path;
-};
-
-struct RunResult
-{
-    int code = -1;
-    std::string out, err;
-};
-
-std::string readText(const std::string& path)
-{
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-void writeText(const std::string& path, const std::string& text)
-{
-    std::ofstream(path, std::ios::binary) << text;
-}
-
 /** `s` quoted for /bin/sh. */
-std::string q(const std::string& s)
-{
-    std::string out = "'";
-    for (const char ch : s) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return out + "'";
-}
+std::string q(const std::string& s) { return mrpt_topoeval::testing::shellQuote(s); }
 
 /** Runs `topoeval ARGS` (ARGS already quoted), capturing exit code, stdout and stderr. */
-RunResult run(const std::string& args)
-{
-    static int counter = 0;
-    const ScopedTempDir dir_tmp("cli_io");
-    const std::string& dir = dir_tmp.path;
-    const std::string out = dir + "/out" + std::to_string(counter) + ".txt";
-    const std::string err = dir + "/err" + std::to_string(counter++) + ".txt";
-    const std::string cmd = q(topoevalBin()) + " " + args + " >" + q(out) + " 2>" + q(err);
-    const int status = std::system(cmd.c_str());
-    RunResult r;
-    // A crash (signal) shows as 128 + signal number, never as one of our codes.
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    r.out = readText(out);
-    r.err = readText(err);
-    return r;
-}
-
-int lineCount(const std::string& s)
-{
-    int n = 0;
-    for (const char ch : s) n += ch == '\n';
-    return n;
-}
-
-bool contains(const std::string& s, const std::string& part)
-{
-    return s.find(part) != std::string::npos;
-}
+RunResult run(const std::string& args) { return mrpt_topoeval::testing::runTopoeval(args); }
 
 /** Everything in `dir`, recursively (hidden temp files included). */
 std::vector<std::string> listing(const std::string& dir)

@@ -17,38 +17,18 @@
 #include <sstream>
 #include <string>
 
+#include "cli_runner.h"
 #include "test_paths.h"
 
 namespace fs = std::filesystem;
 using mrpt_topoeval::OutputError;
 using mrpt_topoeval::writeFileAtomic;
 
+using mrpt_topoeval::testing::readText;
+using mrpt_topoeval::testing::ScopedTempDir;
+
 namespace
 {
-/** A fresh temporary folder, removed with everything in it when the test is done. */
-struct ScopedTempDir
-{
-    explicit ScopedTempDir(const std::string& tag) : path(mrpt_topoeval::testing::makeTempDir(tag))
-    {
-    }
-    ~ScopedTempDir()
-    {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    ScopedTempDir(const ScopedTempDir&) = delete;
-    ScopedTempDir& operator=(const ScopedTempDir&) = delete;
-    const std::string path;
-};
-
-std::string readText(const std::string& path)
-{
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
 /** Names of everything in `dir` (hidden files included: that is where temp files hide). */
 std::set<std::string> listing(const std::string& dir)
 {

@@ -1,0 +1,42 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+// What tests that run the `topoeval` command share: temporary folders, file text, shell
+// quoting, and running the command with its output captured.
+
+#include <string>
+
+namespace mrpt_topoeval::testing
+{
+/** A fresh temporary folder (makeTempDir), removed with everything in it at scope exit. */
+struct ScopedTempDir
+{
+    explicit ScopedTempDir(const std::string& tag);
+    ~ScopedTempDir();
+    ScopedTempDir(const ScopedTempDir&) = delete;
+    ScopedTempDir& operator=(const ScopedTempDir&) = delete;
+    const std::string path;
+};
+
+/** The whole file as bytes ("" if it cannot be read). */
+std::string readText(const std::string& path);
+/** Writes `text` as the whole file. */
+void writeText(const std::string& path, const std::string& text);
+/** `s` quoted for /bin/sh. */
+std::string shellQuote(const std::string& s);
+bool contains(const std::string& s, const std::string& part);
+int lineCount(const std::string& s);
+
+struct RunResult
+{
+    /** Exit code; 128 + N when ended by signal N (never one of ours); 124 when `timeout`
+     * stopped the run. */
+    int code = -1;
+    std::string out, err;
+};
+
+/** Runs `topoeval ARGS` (ARGS already quoted), capturing exit code, stdout and stderr; under
+ * `timeout` when time_limit_s > 0. */
+RunResult runTopoeval(const std::string& args, int time_limit_s = 0);
+
+}  // namespace mrpt_topoeval::testing
