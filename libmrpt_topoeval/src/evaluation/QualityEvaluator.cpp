@@ -162,12 +162,12 @@ std::vector<ConsistencyClass> localConsistency(const TopologyGraph& gt, const To
 // Paper IV, brokenness: grow groups of connected matched vertices by wavefront while their
 // Horn alignment's mean squared error stays under the threshold; keep groups of at least the
 // minimum size; the degree is the number of groups minus one.
-Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& m,
+Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
+                      const internal::MatchView& view, const GraphMatch& m,
                       const QualityParameters& p)
 {
     Brokenness b;
     if (m.pairs.empty()) return b;
-    const internal::MatchView view = internal::makeMatchView(gt);
     std::vector<int> partner(gt.vertices.size(), -1), iso(gt.vertices.size(), -1);
     for (const auto& pr : m.pairs)
     {
@@ -382,7 +382,9 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     p.validate();
     QualityReport r;
     r.match = match;
-    r.gt_vertices = static_cast<std::size_t>(internal::makeMatchView(ground_truth).numActive());
+    // The ground truth's matching view: its matchable vertices and, for brokenness, adjacency.
+    const internal::MatchView gt_view = internal::makeMatchView(ground_truth);
+    r.gt_vertices = static_cast<std::size_t>(gt_view.numActive());
     r.map_vertices = static_cast<std::size_t>(internal::makeMatchView(map).numActive());
     r.local_consistency = localConsistency(ground_truth, map, match, p);
     r.messages = match.messages;
@@ -418,7 +420,7 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     r.relative_accuracy.rmse_m = std::sqrt(mse);
     r.relative_accuracy.score = invScore(r.relative_accuracy.rmse_m, p.accuracy_scale_m);
 
-    r.brokenness = brokenness(ground_truth, map, match, p);
+    r.brokenness = brokenness(ground_truth, map, gt_view, match, p);
 
     // Quality: weighted mean of coverage, relative accuracy, the mean of the non-empty
     // consistency classes, and brokenness (doc/quality.md).
