@@ -388,6 +388,13 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     r.map_vertices = static_cast<std::size_t>(internal::makeMatchView(map).numActive());
     r.local_consistency = localConsistency(ground_truth, map, match, p);
     r.messages = match.messages;
+    // Brokenness needs two groups of brokenness_min_vertices: say so when the ground truth is
+    // too small for that (a bare floor plan of a few rooms), so a 0 is not read as "unbroken".
+    if (r.gt_vertices < 2 * static_cast<std::size_t>(p.brokenness_min_vertices))
+        r.messages.push_back("the ground truth's graph has " + std::to_string(r.gt_vertices) +
+                             " matchable vertices, fewer than two brokenness groups of " +
+                             std::to_string(p.brokenness_min_vertices) +
+                             ": brokenness cannot be measured on it");
     if (match.pairs.empty())
     {
         r.messages.push_back("nothing was matched: coverage and quality are 0");

@@ -22,6 +22,11 @@ struct MatchContext
     std::vector<int> map_to_gt;  //!< Assigned gt vertex per map vertex, -1 if none.
 };
 
+/** The smallest isomorphism accepted between graphs of `n_gt` and `n_map` matchable vertices:
+ * min_isomorphism_vertices, or on graphs too small for that min_isomorphism_share of the smaller
+ * one (never fewer than 3). */
+int minIsomorphismSize(const GraphMatcherParameters& params, int n_gt, int n_map);
+
 /** One accepted isomorphism: its pairs in the order the wavefront found them. */
 struct Isomorphism
 {
@@ -31,7 +36,7 @@ struct Isomorphism
 
 /** Paper III-B, Algorithm 1: from every unassigned gt vertex (most similar first), tries every
  * map vertex of the same degree as a seed, grows each by wavefront propagation, and accepts the
- * biggest isomorphism for that vertex if it has at least min_isomorphism_vertices. Accepted
+ * biggest isomorphism for that vertex if it has at least minIsomorphismSize() pairs. Accepted
  * pairs are written into ctx. */
 std::vector<Isomorphism> findIsomorphisms(MatchContext& ctx);
 

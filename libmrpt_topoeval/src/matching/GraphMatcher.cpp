@@ -85,12 +85,13 @@ GraphMatch matchGraphs(const TopologyGraph& ground_truth, const TopologyGraph& m
             for (const auto& vb : map_view.v)
                 any_degree = any_degree || (va.active && vb.active && va.degree() == vb.degree());
         match.messages.push_back(
-            any_degree
-                ? "no isomorphism of at least " + std::to_string(params.min_isomorphism_vertices) +
-                      " vertices was found: the maps share no structure the matcher "
-                      "trusts"
-                : "no vertex of the map has the degree of any ground-truth vertex: "
-                  "nothing is matched");
+            any_degree ? "no isomorphism of at least " +
+                             std::to_string(internal::minIsomorphismSize(params, n_gt, n_map)) +
+                             " vertices was found (graphs of " + std::to_string(n_gt) + " and " +
+                             std::to_string(n_map) +
+                             " matchable vertices): the maps share no structure the matcher trusts"
+                       : "no vertex of the map has the degree of any ground-truth vertex: "
+                         "nothing is matched");
     }
     match.timing_ms["total"] = ms(t0);
     return match;

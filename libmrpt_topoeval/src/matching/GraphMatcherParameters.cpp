@@ -37,6 +37,8 @@ void GraphMatcherParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     MRPT_SAVE_CONFIG_VAR_COMMENT(min_isomorphism_similarity,
                                  "[0..1] pairs less similar are never assigned by isomorphism");
     MRPT_SAVE_CONFIG_VAR_COMMENT(min_isomorphism_vertices, "[1] smallest isomorphism accepted");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(min_isomorphism_share,
+                                 "[ratio] ... or this share of the smaller graph (at least 3)");
     MRPT_SAVE_CONFIG_VAR_COMMENT(max_branches_per_seed,
                                  "[1] wavefront branches explored per seed (bounds recursion)");
     MRPT_SAVE_CONFIG_VAR_COMMENT(neighbour_growing, "[bool] extend the match by neighbour growing");

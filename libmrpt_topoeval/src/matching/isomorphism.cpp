@@ -185,6 +185,14 @@ private:
 };
 }  // namespace
 
+int minIsomorphismSize(const GraphMatcherParameters& params, int n_gt, int n_map)
+{
+    const int smaller = std::min(n_gt, n_map);
+    return std::min(
+        params.min_isomorphism_vertices,
+        std::max(3, static_cast<int>(std::ceil(params.min_isomorphism_share * smaller))));
+}
+
 std::vector<Isomorphism> findIsomorphisms(MatchContext& ctx)
 {
     const int na = static_cast<int>(ctx.gt.v.size()), nb = static_cast<int>(ctx.map.v.size());
@@ -200,10 +208,7 @@ std::vector<Isomorphism> findIsomorphisms(MatchContext& ctx)
     std::stable_sort(order.begin(), order.end(),
                      [&](int x, int y) { return best_sim[x] > best_sim[y]; });
 
-    const int smaller = std::min(ctx.gt.numActive(), ctx.map.numActive());
-    const int min_size = std::min(
-        ctx.params.min_isomorphism_vertices,
-        std::max(3, static_cast<int>(std::ceil(ctx.params.min_isomorphism_share * smaller))));
+    const int min_size = minIsomorphismSize(ctx.params, ctx.gt.numActive(), ctx.map.numActive());
 
     Wavefront wf(ctx);
     std::vector<Isomorphism> accepted;
