@@ -15,11 +15,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli_runner.h"
+#include "simulated_rawlog.h"
 #include "test_paths.h"
 
 namespace fs = std::filesystem;
@@ -48,8 +50,8 @@ RunResult run(const std::string& args)
 }
 
 /** Every file (not folder) under `dir`, recursively, hidden temporary files included.
- * Folders are left out: `rawlog -o DIR` creates DIR before it reads the rawlog, and an empty
- * folder is not a partial output. */
+ * Folders are left out: a test that gives a folder of its own to several runs checks files;
+ * the tests of `rawlog` and `series` check that their output folders are not created. */
 std::vector<std::string> filesUnder(const std::string& dir)
 {
     std::vector<std::string> names;
@@ -57,6 +59,17 @@ std::vector<std::string> filesUnder(const std::string& dir)
     for (const auto& e : fs::recursive_directory_iterator(dir))
         if (!e.is_directory()) names.push_back(e.path().string());
     return names;
+}
+
+/** Everything under `dir`, recursively: each file with its bytes, each folder as "<folder>",
+ * so that a tree can be compared before and after a run. */
+std::map<std::string, std::string> treeOf(const std::string& dir)
+{
+    std::map<std::string, std::string> tree;
+    if (!fs::exists(dir)) return tree;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        tree[e.path().string()] = e.is_directory() ? "<folder>" : readText(e.path().string());
+    return tree;
 }
 
 /** Exit `code`, one `topoeval: error:` line that contains `must_contain`, no file in `out_dir`. */
@@ -195,6 +208,164 @@ TEST_F(BadInputCli, CutRawlogsExit2BeforeTheFirstEntryAnd4After)
     EXPECT_EQ(r.code, 4) << r.err;
     EXPECT_TRUE(contains(r.err, cut)) << r.err;
     EXPECT_TRUE(contains(readText(out + "/report.json"), "\"stop\": \"truncated\""));
+    for (const std::string& f : filesUnder(out))
+        EXPECT_EQ(f.find(".part"), std::string::npos) << "temporary file left: " << f;
+}
+
+// A rawlog that fails the checks must leave nothing behind: not even the output folder, nor
+// the missing folders above it that `-o` would have created.
+TEST_F(BadInputCli, RawlogBadInputCreatesNoOutputFolder)
+{
+    const std::string sample = shareDir() + "/rawlog/office_sim.rawlog.gz";
+    const std::string gt = shareDir() + "/rawlog/office_gt.yaml";
+    if (!fs::exists(sample) || !fs::exists(gt)) GTEST_SKIP() << "no share/ rawlog sample";
+    const ScopedTempDir dir("bad_cli_rawlog_dir");
+    const std::string sample_bytes = readText(sample);
+    ASSERT_GT(sample_bytes.size(), 1000u);
+
+    struct Case
+    {
+        std::string name, file, message;
+    };
+    std::vector<Case> cases;
+    const auto add = [&](const std::string& name, const std::string& message)
+    {
+        cases.push_back({name, dir.path + "/" + name, message});
+        return cases.back().file;
+    };
+    writeText(add("text.rawlog", "not an MRPT rawlog"), "this is not a rawlog\n");
+    writeText(add("empty.rawlog", "is empty"), "");
+    writeText(add("empty.rawlog.gz", "is empty"), "");
+    // The gz sample cut inside its first entry (the gz header and a few compressed bytes), and
+    // inside its second entry (the first sensory frame, so before the first scan).
+    writeText(add("cut_first.rawlog.gz", "no rawlog entry"), sample_bytes.substr(0, 40));
+    writeText(add("cut_second.rawlog.gz", "no 2D laser scan in 1 entries"),
+              sample_bytes.substr(0, 300));
+    // Well-formed rawlogs without a laser scan: plain, gz, and gz cut in the middle.
+    mrpt_topoeval::testing::writeRawlogWithoutScans(add("no_scan.rawlog", "no 2D laser scan"), 30,
+                                                    false);
+    mrpt_topoeval::testing::writeRawlogWithoutScans(add("no_scan.rawlog.gz", "no 2D laser scan"),
+                                                    30, true);
+    const std::string cut_no_scan = add("no_scan_cut.rawlog.gz", "no 2D laser scan");
+    mrpt_topoeval::testing::writeRawlogWithoutScans(cut_no_scan, 2000, true);
+    fs::resize_file(cut_no_scan, fs::file_size(cut_no_scan) / 2);
+
+    for (const Case& c : cases)
+    {
+        SCOPED_TRACE(c.name);
+        const std::string top = dir.path + "/out_" + c.name;
+        for (const std::string& extra : {std::string(), std::string(" --snapshots --force")})
+        {
+            const RunResult r =
+                run("rawlog " + q(c.file) + " -g " + q(gt) + " -o " + q(top + "/a/b") + extra);
+            expectCleanFailure(r, 2, c.file, top);
+            EXPECT_TRUE(contains(r.err, c.message)) << "'" << c.message << "' not in: " << r.err;
+            EXPECT_FALSE(fs::exists(top)) << "the run left " << top << " behind" << extra;
+        }
+    }
+}
+
+// A failing run in a folder that holds a user's files changes nothing in it: no file, no
+// folder (`snapshots/`) is added, removed or rewritten.
+TEST_F(BadInputCli, RawlogAndSeriesFailuresLeaveAnExistingFolderAsItWas)
+{
+    const std::string gt = shareDir() + "/rawlog/office_gt.yaml";
+    const std::string map = shareDir() + "/maps/map_6ccdcaa.yaml";
+    if (!fs::exists(gt) || !fs::exists(map)) GTEST_SKIP() << "no share/ samples";
+    const ScopedTempDir dir("bad_cli_rawlog_keep");
+    const std::string mine = dir.path + "/mine";
+    fs::create_directories(mine + "/notes");
+    writeText(mine + "/notes/todo.txt", "my notes\n");
+    writeText(mine + "/scores.csv", "step,entry\n1,42\n");  // an earlier run's results
+    const auto before = treeOf(mine);
+    ASSERT_EQ(before.size(), 3u);
+
+    const std::string text = dir.path + "/text.rawlog", no_scan = dir.path + "/no_scan.rawlog";
+    writeText(text, "this is not a rawlog\n");
+    mrpt_topoeval::testing::writeRawlogWithoutScans(no_scan, 10, false);
+    const std::string bad_map = dir.path + "/bad.pgm";
+    writeText(bad_map, "P5\n2 2\n255\n");  // no pixels
+    for (const std::string& args :
+         {"rawlog " + q(text) + " -g " + q(gt) + " -o " + q(mine) + " --force",
+          "rawlog " + q(no_scan) + " -g " + q(gt) + " -o " + q(mine) + " --force --snapshots",
+          "series " + q(gt) + " " + q(bad_map) + " -o " + q(mine) + " --force",
+          "series " + q(gt) + " " + q(map) + " " + q(bad_map) + " -o " + q(mine) + " --force"})
+    {
+        SCOPED_TRACE(args);
+        const RunResult r = run(args);
+        EXPECT_EQ(r.code, 2) << r.err;
+        EXPECT_EQ(lineCount(r.err), 1) << r.err;
+        EXPECT_EQ(treeOf(mine), before) << "the failing run changed " << mine;
+    }
+}
+
+// `series` checks every map before it creates its output folder: a bad map anywhere in the
+// list is bad input with nothing written, not a half-filled folder.
+TEST_F(BadInputCli, SeriesBadMapCreatesNoOutputFolder)
+{
+    const std::string gt = shareDir() + "/maps/map_2333d24.yaml";
+    const std::string map = shareDir() + "/maps/map_6ccdcaa.yaml";
+    if (!fs::exists(gt) || !fs::exists(map)) GTEST_SKIP() << "no share/ maps";
+    const ScopedTempDir dir("bad_cli_series");
+    const std::string bad_map = dir.path + "/bad.pgm";
+    writeText(bad_map, "P5\n2 2\n255\n");
+    for (const std::string& maps :
+         {q(bad_map), q(map) + " " + q(bad_map), q(map) + " " + q(map) + " " + q(bad_map)})
+    {
+        SCOPED_TRACE(maps);
+        const std::string top = dir.path + "/out";
+        const RunResult r = run("series " + q(gt) + " " + maps + " -o " + q(top + "/series"));
+        expectCleanFailure(r, 2, bad_map, top);
+        EXPECT_FALSE(fs::exists(top)) << "the run left " << top << " behind";
+    }
+}
+
+// A `scores.csv.part` left by a killed run holds the rows scored before it died: it is an
+// output like the others, never replaced without --force.
+TEST_F(BadInputCli, RawlogNeverOverwritesTheRowsOfAKilledRun)
+{
+    const std::string sample = shareDir() + "/rawlog/office_sim.rawlog.gz";
+    const std::string gt = shareDir() + "/rawlog/office_gt.yaml";
+    if (!fs::exists(sample) || !fs::exists(gt)) GTEST_SKIP() << "no share/ rawlog sample";
+    const ScopedTempDir dir("bad_cli_rawlog_part");
+    const std::string out = dir.path + "/out";
+    fs::create_directory(out);
+    const std::string part = out + "/scores.csv.part";
+    const std::string rows = "step,entry\n1,199\n2,399\n";
+    writeText(part, rows);
+    const RunResult r = run("rawlog " + q(sample) + " -g " + q(gt) + " -o " + q(out));
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_TRUE(contains(r.err, part + ": exists; pass --force")) << r.err;
+    EXPECT_EQ(readText(part), rows);
+    EXPECT_EQ(filesUnder(out), std::vector<std::string>{part});
+}
+
+// A run that fails after its first snapshot keeps the part done: scores.csv with every row
+// scored, the snapshots written, and report.json saying that an error stopped it and which.
+TEST_F(BadInputCli, RawlogErrorAfterTheFirstSnapshotKeepsThePartDone)
+{
+    const std::string sample = shareDir() + "/rawlog/office_sim.rawlog.gz";
+    const std::string gt = shareDir() + "/rawlog/office_gt.yaml";
+    if (!fs::exists(sample) || !fs::exists(gt)) GTEST_SKIP() << "no share/ rawlog sample";
+    const ScopedTempDir dir("bad_cli_rawlog_error");
+    const std::string out = dir.path + "/out";
+    // A folder where the second snapshot's map goes: that write fails (exit 3).
+    const std::string blocker = out + "/snapshots/step_0002.gridmap.gz";
+    fs::create_directories(blocker);
+    const RunResult r = run("rawlog " + q(sample) + " -g " + q(gt) + " -o " + q(out) +
+                            " --every 20 --snapshots --force");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_TRUE(contains(r.err, "topoeval: error: " + blocker)) << r.err;
+    EXPECT_TRUE(fs::is_directory(blocker));
+    EXPECT_TRUE(fs::exists(out + "/snapshots/step_0001.gridmap.gz"));
+    EXPECT_TRUE(fs::exists(out + "/snapshots/step_0001_match.png"));
+    const std::string csv = readText(out + "/scores.csv");
+    EXPECT_EQ(lineCount(csv), 3) << csv;  // the header and both rows scored
+    const std::string json = readText(out + "/report.json");
+    EXPECT_TRUE(contains(json, "\"stop\": \"error\"")) << json;
+    EXPECT_TRUE(contains(json, "step_0002.gridmap.gz")) << json;
+    EXPECT_TRUE(contains(json, "\"snapshots\": 2")) << json;
     for (const std::string& f : filesUnder(out))
         EXPECT_EQ(f.find(".part"), std::string::npos) << "temporary file left: " << f;
 }

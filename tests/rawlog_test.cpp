@@ -1,8 +1,8 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 // Rawlog scoring (doc/rawlog.md): a rawlog simulated from a known office map with perfect
 // odometry must end covered and unbroken; real-data quirks (untimed odometry, unknown objects)
-// are repaired and counted; truncated, empty and non-rawlog files are handled; real logs from
-// ../shared/data when present.
+// are repaired and counted; truncated, empty and non-rawlog files are handled, and probe()
+// refuses them as run() does; real logs from ../shared/data when present.
 //
 // The demo's sample in share/mrpt_topoeval/rawlog/ is made by the DISABLED_ test at the end:
 //   build-*/tests/rawlog_test --gtest_also_run_disabled_tests --gtest_filter='*MakeShareSample*'
@@ -240,6 +240,128 @@ TEST(RawlogScorer, EmptyMissingAndNonRawlogFilesAreBadInput)
             EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
         }
     }
+}
+
+namespace
+{
+/** The InputError message of `f`, or "(accepted)". */
+template <typename F>
+std::string inputErrorOf(F&& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const InputError& e)
+    {
+        return e.what();
+    }
+    return "(accepted)";
+}
+}  // namespace
+
+// probe() runs before the CLI creates its output folder: it must refuse exactly what run()
+// refuses as bad input, with the same message.
+TEST(RawlogScorer, ProbeRefusesWhatRunRefusesWithTheSameMessage)
+{
+    const TempDir dir;
+    const std::string empty = dir.path + "/empty.rawlog";
+    std::ofstream(empty).close();
+    const std::string text = dir.path + "/text.rawlog";
+    std::ofstream(text) << "this is not a rawlog\n";
+    const std::string no_scan = dir.path + "/no_scan.rawlog";
+    writeRawlogWithoutScans(no_scan, 12, false);
+    const std::string no_scan_gz = dir.path + "/no_scan.rawlog.gz";
+    writeRawlogWithoutScans(no_scan_gz, 2000, true);
+    const std::string no_scan_cut = dir.path + "/no_scan_cut.rawlog.gz";
+    fs::copy_file(no_scan_gz, no_scan_cut);
+    cutFile(no_scan_cut, fs::file_size(no_scan_gz) / 2);
+    const std::string log = dir.path + "/short.rawlog";
+    auto poses = officePath();
+    poses.resize(5);
+    writeSimulatedRawlog(log, office(), poses);  // 10 entries: action, frame, action, ...
+    const std::string cut_first = dir.path + "/cut_first.rawlog";
+    fs::copy_file(log, cut_first);
+    cutFile(cut_first, 100);
+
+    struct Case
+    {
+        std::string name, path, must_contain;
+        RawlogScorerOptions opts;
+    };
+    std::vector<Case> cases = {
+        {"empty", empty, "is empty", everyScans(10)},
+        {"text", text, "not an MRPT rawlog", everyScans(10)},
+        {"missing", dir.path + "/missing.rawlog", "no such file", everyScans(10)},
+        {"folder", dir.path, "is a folder", everyScans(10)},
+        {"no scan", no_scan, "no 2D laser scan in 12 entries", everyScans(10)},
+        {"no scan, gz", no_scan_gz, "no 2D laser scan in 2000 entries", everyScans(10)},
+        {"no scan, cut", no_scan_cut, "before it stopped", everyScans(10)},
+        {"cut in the first entry", cut_first, "not an MRPT rawlog", everyScans(10)},
+    };
+    Case max_entries{"max entries before a scan", log, "max entries reached", everyScans(10)};
+    max_entries.opts.max_entries = 1;  // the first action only
+    cases.push_back(max_entries);
+    const std::string ini = dir.path + "/offset.ini";
+    std::ofstream(ini) << "[MappingApplication]\nrawlog_offset=10\n";
+    Case offset{"every scan before rawlog_offset", log, "no 2D laser scan in 10", everyScans(10)};
+    offset.opts.slam_config_file = ini;
+    cases.push_back(offset);
+    Case bad_ini{"missing SLAM INI", log, "--slam-config", everyScans(10)};
+    bad_ini.opts.slam_config_file = dir.path + "/missing.ini";
+    cases.push_back(bad_ini);
+
+    for (const Case& c : cases)
+    {
+        SCOPED_TRACE(c.name);
+        const RawlogScorer scorer(c.opts, Parameters());
+        const std::string probed = inputErrorOf([&] { scorer.probe(c.path); });
+        RawlogScorer runner(c.opts, Parameters());
+        const std::string ran = inputErrorOf([&] { runner.run(c.path, office()); });
+        EXPECT_EQ(probed, ran);
+        EXPECT_NE(probed.find(c.must_contain), std::string::npos) << probed;
+        if (c.name != "missing SLAM INI")
+        {
+            EXPECT_NE(probed.find(c.path), std::string::npos) << probed;
+        }
+    }
+}
+
+TEST(RawlogScorer, ProbeReadsUpToTheFirstScanOnly)
+{
+    const TempDir dir;
+    auto poses = officePath();
+    poses.resize(60);
+    const std::string log = dir.path + "/office.rawlog";
+    writeSimulatedRawlog(log, office(), poses);
+    SimulatedRawlogOptions obs;
+    obs.observation_format = true;
+    obs.gzip = true;
+    const std::string log_obs = dir.path + "/office_obs.rawlog.gz";
+    writeSimulatedRawlog(log_obs, office(), poses, obs);
+
+    const RawlogScorer scorer(everyScans(100), Parameters());
+    for (const std::string& path : {log, log_obs})
+    {
+        SCOPED_TRACE(path);
+        // Action, then the frame with the first scan; odometry, then the first scan.
+        const RawlogProbe p = scorer.probe(path);
+        EXPECT_EQ(p.first_scan_entry, 1u);
+        EXPECT_EQ(p.entries, 2u);
+    }
+    // The SLAM set-up is the one run() uses.
+    RawlogScorer runner(everyScans(100), Parameters());
+    EXPECT_EQ(scorer.probe(log).effective_slam_ini, runner.run(log, office()).effective_slam_ini);
+
+    // Entries before rawlog_offset do not count, as in run().
+    const std::string ini = dir.path + "/offset.ini";
+    std::ofstream(ini) << "[MappingApplication]\nrawlog_offset=4\noccupancyGrid_count=0\n";
+    RawlogScorerOptions o = everyScans(100);
+    o.slam_config_file = ini;
+    const RawlogProbe p = RawlogScorer(o, Parameters()).probe(log);
+    EXPECT_EQ(p.first_scan_entry, 5u);
+    ASSERT_FALSE(p.messages.empty());  // the grid added to a configuration without one
+    EXPECT_NE(p.messages.front().find("no occupancy grid"), std::string::npos);
 }
 
 TEST(RawlogScorer, SlamConfigurationIsMrptsOwn)

@@ -85,6 +85,34 @@ int runGuarded(const std::function<int()>& body)
     }
 }
 
+std::string currentErrorText()
+{
+    try
+    {
+        throw;
+    }
+    catch (const InputError& e)
+    {
+        return oneLine(e.what());
+    }
+    catch (const OutputError& e)
+    {
+        return oneLine(e.what());
+    }
+    catch (const std::bad_alloc&)
+    {
+        return "out of memory";
+    }
+    catch (const std::exception& e)
+    {
+        return oneLine(mrpt::exception_to_str(e));
+    }
+    catch (...)
+    {
+        return "unknown exception";
+    }
+}
+
 void printWarning(const std::string& msg)
 {
     std::cout.flush();

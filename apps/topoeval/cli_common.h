@@ -23,6 +23,9 @@ enum ExitCode : int
     kExitInternalError = 1,  //!< A bug or resource failure (out of memory).
     kExitBadInput = 2,       //!< Bad input file, bad parameter, or command-line misuse.
     kExitOutputError = 3,    //!< An output could not be written or would overwrite a file.
+    kExitStoppedEarly = 4,   //!< `rawlog` only: reading stopped before the end of the rawlog
+                             //!< (Ctrl-C, truncated or corrupt rawlog); the outputs for the
+                             //!< part done were written.
 };
 
 /** A command-line mistake (unknown option, missing argument): exit code 2 like bad input. */
@@ -38,6 +41,10 @@ std::string versionLine();
 /** Runs `body` and turns exceptions into one-line messages on stderr and exit codes:
  * InputError -> "topoeval: error: ..." and 2, OutputError -> 3, anything else -> 1. */
 int runGuarded(const std::function<int()>& body);
+
+/** The text of the exception being handled, on one line, as runGuarded() would print it
+ * ("out of memory" for std::bad_alloc). Call it in a catch block only. */
+std::string currentErrorText();
 
 /** Prints "topoeval: warning: <msg>" on stderr. */
 void printWarning(const std::string& msg);

@@ -11,23 +11,72 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cli_common.h"
+
 namespace fs = std::filesystem;
 
 namespace mrpt_topoeval::cli
 {
-void prepareOutputFolder(const std::string& dir, const std::vector<std::string>& names, bool force)
+void checkOutputFolder(const std::string& dir, const std::vector<std::string>& names, bool force,
+                       const std::vector<std::string>& inputs)
 {
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         throw OutputError(dir + ": exists and is not a folder (--out)");
-    fs::create_directories(dir, ec);
-    if (ec) throw OutputError(dir + ": cannot create the output folder: " + ec.message());
-    if (force) return;
     for (const auto& name : names)
     {
         const fs::path p = fs::path(dir) / name;
-        if (fs::exists(fs::symlink_status(p.string().back() == '/' ? p.parent_path() : p, ec)))
-            throw OutputError(p.string() + ": exists; pass --force to replace it");
+        if (name.back() == '/')
+        {
+            if (!force && fs::exists(fs::symlink_status(p.parent_path(), ec)))
+                throw OutputError(p.string() + ": exists; pass --force to replace it");
+        }
+        else
+            checkOutputPath(p.string(), force, inputs);
+    }
+}
+
+OutputFolder::OutputFolder(const std::string& dir) : m_dir(dir) { create(dir); }
+
+OutputFolder::~OutputFolder()
+{
+    if (m_keep) return;
+    // rmdir semantics: a folder that holds anything (a file this run kept, or one someone
+    // else put there meanwhile) stays.
+    std::error_code ec;
+    for (auto it = m_created.rbegin(); it != m_created.rend(); ++it)
+        if (fs::is_directory(fs::symlink_status(*it, ec)) && fs::is_empty(*it, ec))
+            fs::remove(*it, ec);
+}
+
+std::string OutputFolder::file(const std::string& name) const
+{
+    return (fs::path(m_dir) / name).string();
+}
+
+std::string OutputFolder::createSubfolder(const std::string& name)
+{
+    const std::string path = file(name);
+    create(path);
+    return path;
+}
+
+void OutputFolder::create(const std::string& path)
+{
+    // One level at a time, so that exactly the folders this run made are known: a folder that
+    // create_directory() did not make (it existed, or appeared meanwhile) is not ours.
+    fs::path sofar;
+    for (const auto& part : fs::path(path))
+    {
+        if (part.empty()) continue;  // the end of a trailing '/'
+        sofar /= part;
+        std::error_code ec;
+        if (fs::is_directory(sofar, ec)) continue;
+        const bool made = fs::create_directory(sofar, ec);
+        if (ec)
+            throw OutputError(path + ": cannot create the output folder '" + sofar.string() +
+                              "': " + ec.message());
+        if (made) m_created.push_back(sofar.string());
     }
 }
 
@@ -36,7 +85,14 @@ ScoresCsv::ScoresCsv(const std::string& path) : m_path(path), m_part(path + ".pa
     m_out.open(m_part, std::ios::binary | std::ios::trunc);
     if (!m_out) throw OutputError(m_part + ": cannot open for writing");
     m_out << scoreCsvHeader() << "\n" << std::flush;
-    if (!m_out) throw OutputError(m_part + ": write failed");
+    if (!m_out)
+    {
+        // Not even the header: nothing worth keeping (the destructor does not run).
+        m_out.close();
+        std::error_code ec;
+        fs::remove(m_part, ec);
+        throw OutputError(m_part + ": write failed");
+    }
 }
 
 ScoresCsv::~ScoresCsv()

@@ -2,8 +2,8 @@
 #pragma once
 
 // The outputs `rawlog` and `series` share: an output folder whose files are refused without
-// --force, `scores.csv` written row by row under a temporary name, maps as .gridmap.gz,
-// JSON strings.
+// --force and which a failed run leaves as it found it, `scores.csv` written row by row under
+// a temporary name, maps as .gridmap.gz, JSON strings.
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/RawlogScorer.h>
@@ -14,9 +14,42 @@
 
 namespace mrpt_topoeval::cli
 {
-/** Creates `dir` if needed and refuses (OutputError, exit 3) any of `names` that exists in it
- * unless `force`; names ending in '/' are folders. \throws OutputError */
-void prepareOutputFolder(const std::string& dir, const std::vector<std::string>& names, bool force);
+/** Checks the output folder `dir` before any input is read and before anything is created:
+ * refuses `dir` if it is not a folder, any of `names` in it that exists unless `force` (exit
+ * 3), and a file of `names` that is one of `inputs` even with `force` (exit 2). Names ending
+ * in '/' are folders. \throws OutputError, UsageError */
+void checkOutputFolder(const std::string& dir, const std::vector<std::string>& names, bool force,
+                       const std::vector<std::string>& inputs);
+
+/** The output folder of a run, created (like `mkdir -p`) once its inputs have been checked.
+ * It remembers which folders it created: unless keep() was called, the destructor removes
+ * those of them that are empty again, deepest first. So a run that fails before it has
+ * written anything leaves the file system as it found it, and a folder that existed before
+ * the run, or one that holds any file, is never removed. */
+class OutputFolder
+{
+public:
+    /** Creates `dir` and its missing parents. \throws OutputError */
+    explicit OutputFolder(const std::string& dir);
+    ~OutputFolder();
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+
+    /** `dir/name`. */
+    std::string file(const std::string& name) const;
+    /** Creates the folder `dir/name` if missing (removed like `dir` unless kept).
+     * \throws OutputError */
+    std::string createSubfolder(const std::string& name);
+    /** The run has written results: nothing is removed. */
+    void keep() { m_keep = true; }
+
+private:
+    void create(const std::string& path);
+
+    std::string m_dir;
+    std::vector<std::string> m_created;  // outermost first
+    bool m_keep = false;
+};
 
 /** `scores.csv` appended and flushed row by row to `<path>.part`, renamed to `path` by
  * commit() (also after a stop, so the part done is kept). A run that dies leaves the
@@ -29,6 +62,10 @@ public:
     void append(const ScoreRow& row);
     /** Closes and renames. \throws OutputError */
     void commit();
+    /** Rows appended so far. */
+    std::size_t rows() const { return m_rows; }
+    /** The final name (`path` of the constructor). */
+    const std::string& path() const { return m_path; }
 
 private:
     std::string m_path, m_part;

@@ -29,10 +29,6 @@ namespace mrpt_topoeval::cli
 {
 namespace
 {
-/** Exit code of a run that stopped before the end of the rawlog (Ctrl-C, truncated or corrupt
- * rawlog): the outputs for the part done were written. */
-constexpr int kExitStoppedEarly = 4;
-
 // Set by SIGINT; the scorer checks it between entries. The handler does nothing else but
 // restore the default action, so that a second Ctrl-C ends the program at once.
 std::atomic<bool> g_stop{false};
@@ -85,6 +81,12 @@ public:
             std::cerr << "topoeval: rawlog: " << stats << "\n" << std::flush;
     }
 
+    /** Ends the bar's line on a terminal, so that a message does not land on it. */
+    void endLine()
+    {
+        if (m_tty) std::cerr << "\n" << std::flush;
+    }
+
 private:
     bool m_tty;
     std::chrono::steady_clock::time_point m_last;
@@ -107,6 +109,12 @@ std::string statsJson(const RawlogStats& s)
        << ", \"skipped_before_offset\": " << s.skipped_before_offset << "}";
     return os.str();
 }
+
+/** The files of DIR, checked before the run; `scores.csv.part` holds the rows of a run that
+ * was killed, which are results too. */
+const std::vector<std::string> kOutputNames = {"scores.csv", "scores.csv.part",  "report.json",
+                                               "scores.png", "final.gridmap.gz", "final.png",
+                                               "snapshots/"};
 
 /** Indents every line after the first (nested JSON text). */
 std::string indentNested(const std::string& json, const std::string& pad)
@@ -133,11 +141,12 @@ int verbRawlog(int argc, char** argv)
         "without odometry and objects ICP-SLAM does not use are counted. Outputs in DIR: "
         "scores.csv (one row per snapshot, written as they come), report.json, scores.png, "
         "final.gridmap.gz, final.png; with --snapshots each snapshot's map and match picture "
-        "in DIR/snapshots/. Existing outputs are never replaced without --force. Ctrl-C or a "
-        "truncated/corrupt rawlog stops reading; the map built so far is scored and every "
-        "output written. Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 output "
-        "error, 4 stopped early (Ctrl-C, or truncated/corrupt rawlog): outputs for the part "
-        "done were written.");
+        "in DIR/snapshots/. Existing outputs are never replaced without --force. The rawlog is "
+        "read up to its first scan before DIR is created: bad input leaves nothing behind. "
+        "Ctrl-C or a truncated/corrupt rawlog stops reading; the map built so far is scored "
+        "and every output written. Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 "
+        "output error, 4 stopped early (Ctrl-C, or truncated/corrupt rawlog): outputs for the "
+        "part done were written.");
     TCLAP::CmdLine& cmd = cl.cmd();
     // Declared in reverse order of the usage line (TCLAP lists the last added first).
     TCLAP::SwitchArg print_slam_arg(
@@ -184,6 +193,10 @@ int verbRawlog(int argc, char** argv)
     const bool force = std_opts.force();
 
     const Parameters params = std_opts.parameters();
+    // Outputs are checked first, as by every verb, but nothing is created until the inputs
+    // have passed their checks: bad input must not leave an empty DIR behind.
+    checkOutputFolder(dir, kOutputNames, force,
+                      {rawlog_path, gt_path, slam_arg.getValue(), std_opts.config()});
     if (!fs::exists(rawlog_path)) throw InputError(rawlog_path + ": no such file");
     const LoadedMap gt = loadMap(gt_path, params.map_load);
 
@@ -193,26 +206,25 @@ int verbRawlog(int argc, char** argv)
     opts.slam_config_file = slam_arg.getValue();
     opts.keep_snapshot_graphs = snapshots_arg.getValue();
     RawlogScorer scorer(opts, params);
+    // The SLAM configuration, and the rawlog up to its first scan: what the run would refuse
+    // as bad input (not a rawlog, empty, cut in its first entry, no scan) is refused now.
+    const RawlogProbe probe = scorer.probe(rawlog_path);
 
-    prepareOutputFolder(
-        dir,
-        {"scores.csv", "report.json", "scores.png", "final.gridmap.gz", "final.png", "snapshots/"},
-        force);
-    const std::string snap_dir = (fs::path(dir) / "snapshots").string();
-    if (snapshots_arg.getValue())
-    {
-        std::error_code ec;
-        fs::create_directories(snap_dir, ec);
-        if (ec) throw OutputError(snap_dir + ": cannot create: " + ec.message());
-    }
-    const auto out = [&](const std::string& name) { return (fs::path(dir) / name).string(); };
+    // From here on the folder and what is in it are this run's: if it fails before its first
+    // snapshot, `folder` and `csv` remove what they created (and only that).
+    OutputFolder folder(dir);
+    const std::string snap_dir =
+        snapshots_arg.getValue() ? folder.createSubfolder("snapshots") : std::string();
+    const auto out = [&](const std::string& name) { return folder.file(name); };
 
     ScoresCsv csv(out("scores.csv"));
     std::vector<std::string> written;
+    ScoreRow last_row;
     scorer.onSnapshot(
         [&](const Snapshot& s)
         {
             csv.append(s.row);
+            last_row = s.row;
             if (!snapshots_arg.getValue()) return;
             char stem[32];
             std::snprintf(stem, sizeof(stem), "step_%04d", s.row.step);
@@ -227,11 +239,77 @@ int verbRawlog(int argc, char** argv)
     Progress progress;
     scorer.onProgress([&](const RawlogProgress& p) { progress.update(p, false); });
 
+    mrpt::config::CConfigFileMemory topo_ini;
+    params.saveToConfigFile(topo_ini);
+    const auto configuration_json = [&](const std::string& slam_ini)
+    {
+        std::ostringstream os;
+        os << "{\"every_scans\": " << opts.every_scans << ", \"max_entries\": " << opts.max_entries
+           << ", \"max_entry_bytes\": " << opts.max_entry_bytes
+           << ", \"slam_config_file\": " << jsonString(opts.slam_config_file)
+           << ", \"slam_ini\": " << jsonString(slam_ini)
+           << ", \"topoeval_config_file\": " << jsonString(std_opts.config())
+           << ", \"topoeval_ini\": " << jsonString(topo_ini.getContent()) << "}";
+        return os.str();
+    };
+    const auto messages_json = [](const std::vector<std::string>& messages)
+    {
+        std::string js = "[";
+        for (std::size_t i = 0; i < messages.size(); ++i)
+            js += (i ? ", " : "") + jsonString(messages[i]);
+        return js + "]";
+    };
+
     RawlogScoreResult res;
+    try
     {
         const SigintScope sigint;
         res = scorer.run(rawlog_path, gt.grid, &g_stop);
     }
+    catch (...)
+    {
+        // Nothing scored yet: rethrown, the folder is left as the run found it.
+        if (csv.rows() == 0) throw;
+        // Snapshots were scored: they are results, kept with a report.json that says the run
+        // stopped on an error and which. What the scorer had not returned yet (its counters,
+        // the final report) is null. Best effort: the error reported is the first one.
+        folder.keep();
+        progress.endLine();
+        const std::string error = currentErrorText();
+        std::vector<std::string> kept;
+        try
+        {
+            csv.commit();
+            kept.push_back("scores.csv");
+        }
+        catch (const std::exception&)
+        {
+            kept.push_back("scores.csv.part");
+        }
+        try
+        {
+            std::ostringstream js;
+            js << "{\n  \"rawlog\": " << jsonString(rawlog_path)
+               << ",\n  \"ground_truth\": " << jsonString(gt_path) << ",\n  \"stop\": \"error\""
+               << ",\n  \"stop_entry\": null,\n  \"stop_message\": " << jsonString(error)
+               << ",\n  \"stats\": null,\n  \"snapshots\": " << csv.rows()
+               << ",\n  \"messages\": " << messages_json(probe.messages)
+               << ",\n  \"configuration\": " << configuration_json(probe.effective_slam_ini)
+               << ",\n  \"final_scores\": " << scoreRowJson(last_row)
+               << ",\n  \"final_report\": null,\n  \"timing_ms\": null\n}\n";
+            writeFileAtomic(out("report.json"), js.str(), force);
+            kept.push_back("report.json");
+        }
+        catch (const std::exception&)
+        {
+        }
+        std::string names;
+        for (const auto& k : kept) names += (names.empty() ? "" : ", ") + k;
+        printWarning(dir + ": kept the " + std::to_string(csv.rows()) +
+                     " snapshots scored before the error (" + names + ")");
+        throw;
+    }
+    folder.keep();
     {
         RawlogProgress last;
         last.entries = res.stats.entries;
@@ -255,8 +333,6 @@ int verbRawlog(int argc, char** argv)
     written.push_back(out("scores.png"));
 
     // report.json: run summary, effective configuration, final scores.
-    mrpt::config::CConfigFileMemory topo_ini;
-    params.saveToConfigFile(topo_ini);
     std::ostringstream js;
     js << "{\n  \"rawlog\": " << jsonString(rawlog_path)
        << ",\n  \"ground_truth\": " << jsonString(gt_path)
@@ -264,16 +340,8 @@ int verbRawlog(int argc, char** argv)
        << ",\n  \"stop_entry\": " << res.stop_entry
        << ",\n  \"stop_message\": " << jsonString(res.stop_message)
        << ",\n  \"stats\": " << statsJson(res.stats) << ",\n  \"snapshots\": " << res.rows.size()
-       << ",\n  \"messages\": [";
-    for (std::size_t i = 0; i < res.messages.size(); ++i)
-        js << (i ? ", " : "") << jsonString(res.messages[i]);
-    js << "],\n  \"configuration\": {\"every_scans\": " << opts.every_scans
-       << ", \"max_entries\": " << opts.max_entries
-       << ", \"max_entry_bytes\": " << opts.max_entry_bytes
-       << ", \"slam_config_file\": " << jsonString(opts.slam_config_file)
-       << ", \"slam_ini\": " << jsonString(res.effective_slam_ini)
-       << ", \"topoeval_config_file\": " << jsonString(std_opts.config())
-       << ", \"topoeval_ini\": " << jsonString(topo_ini.getContent()) << "}"
+       << ",\n  \"messages\": " << messages_json(res.messages)
+       << ",\n  \"configuration\": " << configuration_json(res.effective_slam_ini)
        << ",\n  \"final_scores\": " << (res.rows.empty() ? "null" : scoreRowJson(res.rows.back()))
        << ",\n  \"final_report\": "
        << indentNested(reportToJson(res.final_gt_graph, res.final_map_graph, res.final_report,

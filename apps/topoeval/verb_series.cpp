@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include "cli_common.h"
@@ -69,6 +70,16 @@ std::vector<std::string> mapsInFolder(const std::string& dir)
     return out;
 }
 
+/** report.json: the ground truth, each map scored (`files`: JSON objects), and how the run
+ * ended: "done", or "error" and the error's text. */
+std::string reportJson(const std::string& gt_path, const std::string& files,
+                       const std::string& error)
+{
+    return "{\n  \"ground_truth\": " + jsonString(gt_path) +
+           ",\n  \"stop\": " + jsonString(error.empty() ? "done" : "error") +
+           ",\n  \"stop_message\": " + jsonString(error) + ",\n  \"maps\": [" + files + "]\n}\n";
+}
+
 /** The last number in a file name (mapbuilt_00200.yaml -> 200), or `fallback`. */
 std::size_t numberInName(const std::string& path, std::size_t fallback)
 {
@@ -98,7 +109,8 @@ int verbSeries(int argc, char** argv)
         "it counts once). The 'entry' column is the last number in each map's file name "
         "(mapbuilt_00200 -> 200), or its position; time_s and scans are empty/0. Outputs in "
         "DIR: scores.csv (row by row), scores.png, report.json. Existing outputs are never "
-        "replaced without --force. Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 "
+        "replaced without --force. Every map is read before DIR is created: a bad one leaves "
+        "nothing behind. Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 "
         "output error.");
     TCLAP::CmdLine& cmd = cl.cmd();
     StandardOptions opts(cl);
@@ -134,36 +146,78 @@ int verbSeries(int argc, char** argv)
     if (dir.empty()) throw cl.usageError("--out needs a folder name");
     const bool force = opts.force();
     const Parameters params = opts.parameters();
+    std::vector<std::string> inputs = maps;
+    inputs.push_back(gt_path);
+    inputs.push_back(opts.config());
+    checkOutputFolder(dir, {"scores.csv", "scores.csv.part", "scores.png", "report.json"}, force,
+                      inputs);
     const LoadedMap gt = loadMap(gt_path, params.map_load);
+    // Every map is read once before the output folder is created, so that a bad one anywhere
+    // in the list is bad input with nothing written. Reading is a small part of a map's
+    // scoring (the graphs are most of it); the maps are not kept, to hold one at a time.
+    for (const auto& m : maps) loadMap(m, params.map_load);
 
-    prepareOutputFolder(dir, {"scores.csv", "scores.png", "report.json"}, force);
-    const auto out = [&](const std::string& name) { return (fs::path(dir) / name).string(); };
+    // From here on: if the run fails before its first row, `folder` and `csv` remove what they
+    // created (and only that).
+    OutputFolder folder(dir);
+    const auto out = [&](const std::string& name) { return folder.file(name); };
     ScoresCsv csv(out("scores.csv"));
     std::vector<ScoreRow> rows;
     std::ostringstream files;
-    for (std::size_t i = 0; i < maps.size(); ++i)
+    try
     {
-        const LoadedMap m = loadMap(maps[i], params.map_load);
-        const auto t0 = Clock::now();
-        const QualityReport report = evaluate(gt.grid, m.grid, params);
-        ScoreRow row = scoreRowFromReport(report);
-        row.step = static_cast<int>(i) + 1;
-        row.entry = numberInName(maps[i], i);
-        row.time_s = std::numeric_limits<double>::quiet_NaN();
-        row.scoring_ms = msSince(t0);
-        csv.append(row);
-        rows.push_back(row);
-        files << (i ? ", " : "") << "{\"file\": " << jsonString(maps[i])
-              << ", \"scores\": " << scoreRowJson(row) << "}";
-        std::cerr << "topoeval: series: " << (i + 1) << "/" << maps.size() << " " << maps[i]
-                  << ": quality " << report.quality << ", coverage " << report.coverage << "\n";
+        for (std::size_t i = 0; i < maps.size(); ++i)
+        {
+            const LoadedMap m = loadMap(maps[i], params.map_load);
+            const auto t0 = Clock::now();
+            const QualityReport report = evaluate(gt.grid, m.grid, params);
+            ScoreRow row = scoreRowFromReport(report);
+            row.step = static_cast<int>(i) + 1;
+            row.entry = numberInName(maps[i], i);
+            row.time_s = std::numeric_limits<double>::quiet_NaN();
+            row.scoring_ms = msSince(t0);
+            csv.append(row);
+            rows.push_back(row);
+            files << (i ? ", " : "") << "{\"file\": " << jsonString(maps[i])
+                  << ", \"scores\": " << scoreRowJson(row) << "}";
+            std::cerr << "topoeval: series: " << (i + 1) << "/" << maps.size() << " " << maps[i]
+                      << ": quality " << report.quality << ", coverage " << report.coverage << "\n";
+        }
     }
+    catch (...)
+    {
+        if (rows.empty()) throw;  // nothing scored: the folder is left as the run found it
+        // Maps were scored: kept, with a report.json that says an error stopped the run and
+        // which. Best effort: the error reported is the first one.
+        folder.keep();
+        const std::string error = currentErrorText();
+        std::string kept;
+        try
+        {
+            csv.commit();
+            kept = "scores.csv";
+        }
+        catch (const std::exception&)
+        {
+            kept = "scores.csv.part";
+        }
+        try
+        {
+            writeFileAtomic(out("report.json"), reportJson(gt_path, files.str(), error), force);
+            kept += ", report.json";
+        }
+        catch (const std::exception&)
+        {
+        }
+        printWarning(dir + ": kept the " + std::to_string(rows.size()) +
+                     " maps scored before the error (" + kept + ")");
+        throw;
+    }
+    folder.keep();
     csv.commit();
     writePngAtomic(out("scores.png"),
                    drawScorePlot(rows, "maps vs " + fs::path(gt_path).filename().string()), force);
-    const std::string json = "{\n  \"ground_truth\": " + jsonString(gt_path) + ",\n  \"maps\": [" +
-                             files.str() + "]\n}\n";
-    writeFileAtomic(out("report.json"), json, force);
+    writeFileAtomic(out("report.json"), reportJson(gt_path, files.str(), ""), force);
 
     std::cout << "ground truth  " << gt_path << " (" << gt.format << ")\n";
     std::cout << "maps          " << maps.size() << "\n";

@@ -133,4 +133,21 @@ inline std::size_t writeSimulatedRawlog(const std::string& path,
     return poses.size();
 }
 
+/** Writes a rawlog of `n` odometry observations and no laser scan: a well-formed rawlog that
+ * `topoeval rawlog` must refuse as bad input. \throws std::runtime_error */
+inline void writeRawlogWithoutScans(const std::string& path, std::size_t n, bool gzip)
+{
+    mrpt::io::CFileGZOutputStream f;
+    if (!f.open(path, gzip ? 1 : 0)) throw std::runtime_error(path + ": cannot write");
+    auto ar = mrpt::serialization::archiveFrom(f);
+    const auto t0 = mrpt::Clock::fromDouble(1.6e9);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        mrpt::obs::CObservationOdometry odo;
+        odo.odometry = mrpt::poses::CPose2D(0.1 * static_cast<double>(i), 0.0, 0.0);
+        odo.timestamp = mrpt::system::timestampAdd(t0, 0.1 * static_cast<double>(i));
+        ar << odo;
+    }
+}
+
 }  // namespace mrpt_topoeval::testing

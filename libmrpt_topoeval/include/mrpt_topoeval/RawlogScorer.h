@@ -148,6 +148,15 @@ struct RawlogScoreResult
     double total_ms = 0.0;
 };
 
+/** What RawlogScorer::probe() found: the rawlog starts like one run() accepts. */
+struct RawlogProbe
+{
+    std::size_t entries = 0;            //!< Entries read, up to and including the first scan's.
+    std::size_t first_scan_entry = 0;   //!< The entry (from 0) holding the first 2D laser scan.
+    std::string effective_slam_ini;     //!< As RawlogScoreResult::effective_slam_ini.
+    std::vector<std::string> messages;  //!< Notes on the SLAM configuration, as run() gives.
+};
+
 /** Reads a rawlog entry by entry, runs ICP-SLAM, scores snapshots (doc/rawlog.md). */
 class RawlogScorer
 {
@@ -171,6 +180,15 @@ public:
     RawlogScoreResult run(const std::string& rawlog_path,
                           const mrpt::maps::COccupancyGridMap2D& ground_truth,
                           const std::atomic<bool>* stop = nullptr);
+
+    /** Checks, before the caller creates any output, what run() would refuse as bad input:
+     * the SLAM configuration, and the rawlog read up to its first 2D laser scan (at or after
+     * `rawlog_offset`, within `max_entries`). Throws the InputError run() would throw, with
+     * the same message. Cheap for a rawlog that starts with a scan; one without any scan is
+     * read to its end, as run() would. A rawlog that passes can still stop early in run()
+     * (truncated or corrupt after its first scan), which is not an exception there.
+     * \throws InputError */
+    RawlogProbe probe(const std::string& rawlog_path) const;
 
     /** The SLAM configuration used without `--slam-config`, as an `icp-slam` INI: ICP-SLAM
      * on a points map, and a 0.05 m occupancy grid that grows as needed. */

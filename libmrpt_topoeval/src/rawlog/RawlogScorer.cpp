@@ -411,6 +411,62 @@ doRANSAC=false
 corresponding_points_decimation=5
 )INI";
 
+// ---- What run() and probe() share, so that both refuse the same files with the same words.
+
+/** The SLAM INI as messages name it, and its text. */
+struct SlamIni
+{
+    std::string name, text;
+};
+
+SlamIni slamIni(const RawlogScorerOptions& o)
+{
+    if (o.slam_config_file.empty()) return {"default SLAM configuration", kDefaultSlamIni};
+    return {o.slam_config_file, readTextFile(o.slam_config_file)};
+}
+
+void refuseEmpty(const rawlog::RawlogReader& reader, const std::string& path)
+{
+    if (reader.fileBytes() == 0) throw InputError(path + ": is empty (no rawlog entries)");
+}
+
+/** The first entry cannot be read: the file is no rawlog at all. */
+InputError notARawlog(const std::string& path, const std::string& why)
+{
+    return InputError(path + ": not an MRPT rawlog (" + why + ")");
+}
+
+std::string maxEntriesMessage(const std::string& path, std::size_t entries)
+{
+    return path + ": stopped before entry " + std::to_string(entries) + " (max entries reached)";
+}
+
+/** Reading ended (`stop_message`: why, if before the end of the file) without a scan. */
+InputError noScan(const std::string& path, std::size_t entries, const std::string& stop_message)
+{
+    // A gz file cut before its first entry decompresses to nothing without an error: "no
+    // scan in 0 entries" would not say what is wrong with it.
+    if (entries == 0 && stop_message.empty())
+        return InputError(path +
+                          ": holds no rawlog entry (empty once decompressed, or cut inside its "
+                          "first entry)");
+    return InputError(
+        path + ": no 2D laser scan in " + std::to_string(entries) + " entries" +
+        (stop_message.empty() ? std::string() : " before it stopped: " + stop_message));
+}
+
+/** Whether an entry gives ICP-SLAM a scan, as Run::process() counts scans. */
+bool holdsScan(const mrpt::serialization::CSerializable::Ptr& obj)
+{
+    if (const auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+    {
+        for (const auto& o : *sf)
+            if (std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o)) return true;
+        return false;
+    }
+    return std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obj) != nullptr;
+}
+
 }  // namespace
 
 std::string toString(RawlogStop stop)
@@ -479,22 +535,62 @@ RawlogScorer::RawlogScorer(const RawlogScorerOptions& options, const Parameters&
 
 std::string RawlogScorer::defaultSlamIniText() { return kDefaultSlamIni; }
 
+RawlogProbe RawlogScorer::probe(const std::string& rawlog_path) const
+{
+    // The checks of run(), in its order, so that a file with two faults gets the same message.
+    const SlamIni ini = slamIni(m_options);
+    rawlog::RawlogReader reader(rawlog_path, m_options.max_entry_bytes);
+    refuseEmpty(reader, rawlog_path);
+    RawlogProbe probe;
+    std::size_t rawlog_offset = 0;
+    {
+        mrpt::slam::CMetricMapBuilderICP builder;  // set up and dropped: only its checks count
+        const SlamSetup setup = configureSlam(builder, ini.text, ini.name);
+        probe.effective_slam_ini = setup.effective_ini;
+        probe.messages = setup.messages;
+        rawlog_offset = setup.rawlog_offset;
+    }
+
+    mrpt::serialization::CSerializable::Ptr obj;
+    std::string why, stop_message;
+    for (;;)
+    {
+        if (m_options.max_entries && reader.entries() >= m_options.max_entries)
+        {
+            stop_message = maxEntriesMessage(rawlog_path, reader.entries());
+            break;
+        }
+        const auto status = reader.next(obj, why);
+        if (status == rawlog::RawlogReader::Status::EndOfFile) break;
+        if (status != rawlog::RawlogReader::Status::Object)
+        {
+            if (reader.entries() == 0) throw notARawlog(rawlog_path, why);
+            stop_message = rawlog_path + ": " + why;
+            break;
+        }
+        const std::size_t entry = reader.entries() - 1;
+        if (entry >= rawlog_offset && holdsScan(obj))
+        {
+            probe.entries = reader.entries();
+            probe.first_scan_entry = entry;
+            return probe;
+        }
+    }
+    throw noScan(rawlog_path, reader.entries(), stop_message);
+}
+
 RawlogScoreResult RawlogScorer::run(const std::string& rawlog_path,
                                     const mrpt::maps::COccupancyGridMap2D& ground_truth,
                                     const std::atomic<bool>* stop)
 {
     const auto t_run = Clock::now();
     RawlogScoreResult res;
-    const std::string ini_name = m_options.slam_config_file.empty() ? "default SLAM configuration"
-                                                                    : m_options.slam_config_file;
-    const std::string ini_text = m_options.slam_config_file.empty()
-                                     ? std::string(kDefaultSlamIni)
-                                     : readTextFile(m_options.slam_config_file);
+    const SlamIni ini = slamIni(m_options);
     rawlog::RawlogReader reader(rawlog_path, m_options.max_entry_bytes);
-    if (reader.fileBytes() == 0) throw InputError(rawlog_path + ": is empty (no rawlog entries)");
+    refuseEmpty(reader, rawlog_path);
 
     Run run(m_options, m_params, ground_truth, res, m_on_snapshot);
-    SlamSetup setup = configureSlam(run.builder, ini_text, ini_name);
+    SlamSetup setup = configureSlam(run.builder, ini.text, ini.name);
     res.effective_slam_ini = setup.effective_ini;
     res.messages = setup.messages;
 
@@ -526,8 +622,7 @@ RawlogScoreResult RawlogScorer::run(const std::string& rawlog_path,
         if (m_options.max_entries && reader.entries() >= m_options.max_entries)
         {
             res.stop = RawlogStop::MaxEntries;
-            res.stop_message = rawlog_path + ": stopped before entry " +
-                               std::to_string(reader.entries()) + " (max entries reached)";
+            res.stop_message = maxEntriesMessage(rawlog_path, reader.entries());
             break;
         }
         const auto status = reader.next(obj, why);
@@ -535,8 +630,7 @@ RawlogScoreResult RawlogScorer::run(const std::string& rawlog_path,
         if (status != rawlog::RawlogReader::Status::Object)
         {
             // A file whose first entry cannot be read is no rawlog at all: bad input.
-            if (reader.entries() == 0)
-                throw InputError(rawlog_path + ": not an MRPT rawlog (" + why + ")");
+            if (reader.entries() == 0) throw notARawlog(rawlog_path, why);
             res.stop = status == rawlog::RawlogReader::Status::Truncated ? RawlogStop::Truncated
                                                                          : RawlogStop::Corrupt;
             res.stop_message = rawlog_path + ": " + why;
@@ -560,13 +654,7 @@ RawlogScoreResult RawlogScorer::run(const std::string& rawlog_path,
     }
     res.stats.entries = reader.entries();
     res.stop_entry = reader.entries();
-    if (res.stats.scans == 0)
-    {
-        throw InputError(
-            rawlog_path + ": no 2D laser scan in " + std::to_string(res.stats.entries) +
-            " entries" +
-            (res.stop_message.empty() ? std::string() : " before it stopped: " + res.stop_message));
-    }
+    if (res.stats.scans == 0) throw noScan(rawlog_path, res.stats.entries, res.stop_message);
     if (run.snapshotDue()) run.snapshot();
     if (run.slamRejections() > 1)
         res.messages.push_back(std::to_string(run.slamRejections()) +
