@@ -176,3 +176,17 @@ TEST(Output, WritesPng)
                  OutputError);
     EXPECT_EQ(listing(dir), std::set<std::string>{"pic.png"});
 }
+
+// The apps' own JSON files (rawlog and series report.json) name the user's files, whose names
+// may hold any byte: the text must stay valid JSON and UTF-8.
+TEST(Output, JsonQuoteEscapesAndKeepsUtf8Valid)
+{
+    EXPECT_EQ(mrpt_topoeval::jsonQuote("plain"), "\"plain\"");
+    EXPECT_EQ(mrpt_topoeval::jsonQuote("a\"b\\c"), "\"a\\\"b\\\\c\"");
+    EXPECT_EQ(mrpt_topoeval::jsonQuote("l1\nl2\t\x01"), "\"l1\\nl2\\t\\u0001\"");
+    EXPECT_EQ(mrpt_topoeval::jsonQuote("caf\xC3\xA9.png"), "\"caf\xC3\xA9.png\"")
+        << "valid UTF-8 is kept";
+    EXPECT_EQ(mrpt_topoeval::jsonQuote("bad\xFF.png"), "\"bad\xEF\xBF\xBD.png\"")
+        << "a stray byte is U+FFFD";
+    EXPECT_EQ(mrpt_topoeval::jsonQuote(std::string("nul\0x", 5)), "\"nul\\u0000x\"");
+}

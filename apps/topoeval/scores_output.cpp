@@ -144,42 +144,6 @@ void writeGridPng(const std::string& path, const mrpt::maps::COccupancyGridMap2D
     writePngAtomic(path, img, overwrite);
 }
 
-std::string jsonString(const std::string& s)
-{
-    std::string out = "\"";
-    for (const char ch : s)
-    {
-        switch (ch)
-        {
-            case '"':
-                out += "\\\"";
-                break;
-            case '\\':
-                out += "\\\\";
-                break;
-            case '\n':
-                out += "\\n";
-                break;
-            case '\r':
-                out += "\\r";
-                break;
-            case '\t':
-                out += "\\t";
-                break;
-            default:
-                if (static_cast<unsigned char>(ch) < 0x20)
-                {
-                    char buf[8];
-                    std::snprintf(buf, sizeof(buf), "\\u%04x", static_cast<unsigned char>(ch));
-                    out += buf;
-                }
-                else
-                    out += ch;
-        }
-    }
-    return out + "\"";
-}
-
 std::string jsonNumber(double v)
 {
     if (!std::isfinite(v)) return "null";

@@ -7,6 +7,7 @@
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/RawlogScorer.h>
+#include <mrpt_topoeval/output.h>
 
 #include <fstream>
 #include <string>
@@ -83,8 +84,6 @@ void writeGridMapGz(const std::string& path, const mrpt::maps::COccupancyGridMap
 void writeGridPng(const std::string& path, const mrpt::maps::COccupancyGridMap2D& grid,
                   bool overwrite);
 
-/** `s` as a JSON string literal. */
-std::string jsonString(const std::string& s);
 /** A number for JSON: null when not finite. */
 std::string jsonNumber(double v);
 /** A score row as a JSON object (the CSV's columns). */

@@ -95,7 +95,7 @@ private:
 std::string statsJson(const RawlogStats& s)
 {
     std::ostringstream os;
-    os << "{\"format\": " << jsonString(s.format) << ", \"entries\": " << s.entries
+    os << "{\"format\": " << jsonQuote(s.format) << ", \"entries\": " << s.entries
        << ", \"action_collections\": " << s.action_collections
        << ", \"sensory_frames\": " << s.sensory_frames << ", \"observations\": " << s.observations
        << ", \"scans\": " << s.scans << ", \"odometry\": " << s.odometry
@@ -246,17 +246,17 @@ int verbRawlog(int argc, char** argv)
         std::ostringstream os;
         os << "{\"every_scans\": " << opts.every_scans << ", \"max_entries\": " << opts.max_entries
            << ", \"max_entry_bytes\": " << opts.max_entry_bytes
-           << ", \"slam_config_file\": " << jsonString(opts.slam_config_file)
-           << ", \"slam_ini\": " << jsonString(slam_ini)
-           << ", \"topoeval_config_file\": " << jsonString(std_opts.config())
-           << ", \"topoeval_ini\": " << jsonString(topo_ini.getContent()) << "}";
+           << ", \"slam_config_file\": " << jsonQuote(opts.slam_config_file)
+           << ", \"slam_ini\": " << jsonQuote(slam_ini)
+           << ", \"topoeval_config_file\": " << jsonQuote(std_opts.config())
+           << ", \"topoeval_ini\": " << jsonQuote(topo_ini.getContent()) << "}";
         return os.str();
     };
     const auto messages_json = [](const std::vector<std::string>& messages)
     {
         std::string js = "[";
         for (std::size_t i = 0; i < messages.size(); ++i)
-            js += (i ? ", " : "") + jsonString(messages[i]);
+            js += (i ? ", " : "") + jsonQuote(messages[i]);
         return js + "]";
     };
 
@@ -289,9 +289,9 @@ int verbRawlog(int argc, char** argv)
         try
         {
             std::ostringstream js;
-            js << "{\n  \"rawlog\": " << jsonString(rawlog_path)
-               << ",\n  \"ground_truth\": " << jsonString(gt_path) << ",\n  \"stop\": \"error\""
-               << ",\n  \"stop_entry\": null,\n  \"stop_message\": " << jsonString(error)
+            js << "{\n  \"rawlog\": " << jsonQuote(rawlog_path)
+               << ",\n  \"ground_truth\": " << jsonQuote(gt_path) << ",\n  \"stop\": \"error\""
+               << ",\n  \"stop_entry\": null,\n  \"stop_message\": " << jsonQuote(error)
                << ",\n  \"stats\": null,\n  \"snapshots\": " << csv.rows()
                << ",\n  \"messages\": " << messages_json(probe.messages)
                << ",\n  \"configuration\": " << configuration_json(probe.effective_slam_ini)
@@ -334,11 +334,11 @@ int verbRawlog(int argc, char** argv)
 
     // report.json: run summary, effective configuration, final scores.
     std::ostringstream js;
-    js << "{\n  \"rawlog\": " << jsonString(rawlog_path)
-       << ",\n  \"ground_truth\": " << jsonString(gt_path)
-       << ",\n  \"stop\": " << jsonString(toString(res.stop))
+    js << "{\n  \"rawlog\": " << jsonQuote(rawlog_path)
+       << ",\n  \"ground_truth\": " << jsonQuote(gt_path)
+       << ",\n  \"stop\": " << jsonQuote(toString(res.stop))
        << ",\n  \"stop_entry\": " << res.stop_entry
-       << ",\n  \"stop_message\": " << jsonString(res.stop_message)
+       << ",\n  \"stop_message\": " << jsonQuote(res.stop_message)
        << ",\n  \"stats\": " << statsJson(res.stats) << ",\n  \"snapshots\": " << res.rows.size()
        << ",\n  \"messages\": " << messages_json(res.messages)
        << ",\n  \"configuration\": " << configuration_json(res.effective_slam_ini)

@@ -75,9 +75,9 @@ std::vector<std::string> mapsInFolder(const std::string& dir)
 std::string reportJson(const std::string& gt_path, const std::string& files,
                        const std::string& error)
 {
-    return "{\n  \"ground_truth\": " + jsonString(gt_path) +
-           ",\n  \"stop\": " + jsonString(error.empty() ? "done" : "error") +
-           ",\n  \"stop_message\": " + jsonString(error) + ",\n  \"maps\": [" + files + "]\n}\n";
+    return "{\n  \"ground_truth\": " + jsonQuote(gt_path) +
+           ",\n  \"stop\": " + jsonQuote(error.empty() ? "done" : "error") +
+           ",\n  \"stop_message\": " + jsonQuote(error) + ",\n  \"maps\": [" + files + "]\n}\n";
 }
 
 /** The last number in a file name (mapbuilt_00200.yaml -> 200), or `fallback`. */
@@ -178,7 +178,7 @@ int verbSeries(int argc, char** argv)
             row.scoring_ms = msSince(t0);
             csv.append(row);
             rows.push_back(row);
-            files << (i ? ", " : "") << "{\"file\": " << jsonString(maps[i])
+            files << (i ? ", " : "") << "{\"file\": " << jsonQuote(maps[i])
                   << ", \"scores\": " << scoreRowJson(row) << "}";
             std::cerr << "topoeval: series: " << (i + 1) << "/" << maps.size() << " " << maps[i]
                       << ": quality " << report.quality << ", coverage " << report.coverage << "\n";
