@@ -5,13 +5,19 @@
 
 #include <gtest/gtest.h>
 #include <mrpt/img/CImage.h>
+#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3DPDFGaussian.h>
+#include <mrpt/poses/CPosePDFParticles.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/map_io.h>
@@ -19,6 +25,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -27,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "../libmrpt_topoeval/src/internal/serialized_layout.h"  // header-only, internal
 #include "test_paths.h"
 
 namespace fs = std::filesystem;
@@ -594,18 +602,18 @@ const std::map<std::string, std::string> kBadInputs = {
     {"empty.png", "empty"},
     {"empty.simplemap", "empty"},
     {"empty.yaml", "empty"},
-    {"far_apart_keyframes.simplemap", "max_cells"},                  // keyframes 2000 km apart
-    {"frame_count_corrupt.simplemap", "a sensory frame declares"},   // 2^31-1 observations
-    {"grid_instead_of_keyframes.simplemap", "COccupancyGridMap2D"},  // wrong class
-    {"huge_dims.jpg", "max_cells"},                                  // SOF declares 65000 x 65000
-    {"huge_dims.pgm", "max_cells"},                                  // 200000 x 200000
-    {"huge_dims.png", "max_cells"},                                  // IHDR 100000 x 100000
-    {"image_huge.yaml", "max_cells"},                                // names huge_dims.pgm
-    {"image_not_an_image.yaml", "not a PNG"},                        // names not_an_image.png
-    {"image_not_found.yaml", "no such file"},                        // names does_not_exist.pgm
-    {"image_truncated.yaml", "cannot decode"},                       // names truncated.png
-    {"infinite_range.simplemap", "non-finite range"},                // a valid range of -inf
-    {"keyframe_count_corrupt.simplemap", "keyframe list declares"},  // 335544326 keyframes
+    {"far_apart_keyframes.simplemap", "max_cells"},                       // keyframes 2000 km apart
+    {"frame_count_corrupt.simplemap", "observation count = 2147483647"},  // 2^31-1
+    {"grid_instead_of_keyframes.simplemap", "COccupancyGridMap2D"},       // wrong class
+    {"huge_dims.jpg", "max_cells"},                    // SOF declares 65000 x 65000
+    {"huge_dims.pgm", "max_cells"},                    // 200000 x 200000
+    {"huge_dims.png", "max_cells"},                    // IHDR 100000 x 100000
+    {"image_huge.yaml", "max_cells"},                  // names huge_dims.pgm
+    {"image_not_an_image.yaml", "not a PNG"},          // names not_an_image.png
+    {"image_not_found.yaml", "no such file"},          // names does_not_exist.pgm
+    {"image_truncated.yaml", "cannot decode"},         // names truncated.png
+    {"infinite_range.simplemap", "non-finite range"},  // a valid range of -inf
+    {"keyframe_count_corrupt.simplemap", "keyframe count = 335544326"},
     {"map.txt", "unknown map format"},
     {"maxval_zero.pgm", "maxval"},
     {"missing_image_key.yaml", "'image'"},
@@ -621,7 +629,7 @@ const std::map<std::string, std::string> kBadInputs = {
     {"origin_yaw.yaml", "yaw"},                  // [1, 2, 0.5]
     {"points_map.gridmap", "CSimplePointsMap"},  // wrong class
     {"random_bytes.gridmap", "not an MRPT serialized file"},
-    {"ray_count_corrupt.simplemap", "a laser scan declares"},  // 3.3e9 rays (crashed MRPT)
+    {"ray_count_corrupt.simplemap", "ray count = 3338666021"},  // crashed MRPT
     {"resolution_nan.yaml", "'resolution' = .nan"},
     {"resolution_negative.yaml", "'resolution' = -1"},
     {"resolution_text.yaml", "'resolution' = abc"},
@@ -755,6 +763,495 @@ TEST(MapIoRealData, ShareCopiesLoad)
         for (int col = 0; col < (row < 19 ? 420 : 189); ++col)
             ASSERT_NE(classify(pixelCell(g, col, row)), Cls::Occupied) << col << ", " << row;
     EXPECT_EQ(classify(pixelCell(g, 189, 19)), Cls::Occupied);
+}
+
+// ------------------------------------------------------------------ serialized layouts
+//
+// internal/serialized_layout.h mirrors MRPT 2.5.8's readers field by field, so that length
+// fields are checked before MRPT allocates. Whether it mirrors them right is measured here
+// against the MRPT that is installed: objects of every version of every accepted class, with
+// every flag that changes the layout, are built byte by byte; the check must consume exactly
+// their bytes, and MRPT must read exactly the same bytes and find its end flag there.
+
+namespace layout
+{
+using Bytes = std::vector<unsigned char>;
+using mrpt_topoeval::internal::LayoutChecker;
+using mrpt_topoeval::internal::LayoutError;
+using mrpt_topoeval::internal::MemoryLayoutSource;
+
+/** Little-endian field writer. */
+struct W
+{
+    Bytes b;
+    W& u8(unsigned v)
+    {
+        b.push_back(static_cast<unsigned char>(v));
+        return *this;
+    }
+    W& u32(std::uint32_t v)
+    {
+        for (int i = 0; i < 4; ++i) b.push_back(static_cast<unsigned char>(v >> (8 * i)));
+        return *this;
+    }
+    template <typename T>
+    W& vals(int n, T v)
+    {
+        for (int i = 0; i < n; ++i)
+        {
+            const auto* p = reinterpret_cast<const unsigned char*>(&v);
+            b.insert(b.end(), p, p + sizeof v);
+        }
+        return *this;
+    }
+    W& f(int n) { return vals(n, 0.5f); }
+    W& d(int n) { return vals(n, 0.25); }
+    W& z(int n) { return vals(n, std::uint8_t{0}); }
+    W& raw(const Bytes& o)
+    {
+        b.insert(b.end(), o.begin(), o.end());
+        return *this;
+    }
+};
+
+/** CArchive::WriteObject()'s framing: 0x80 | name length, name, version, data, 0x88. */
+Bytes obj(const std::string& name, int version, const Bytes& body)
+{
+    W w;
+    w.u8(0x80 | name.size());
+    w.b.insert(w.b.end(), name.begin(), name.end());
+    w.u8(version).raw(body).u8(0x88);
+    return w.b;
+}
+Bytes matrix(const std::string& cls, std::uint32_t r, std::uint32_t c)
+{
+    W w;
+    w.u32(r).u32(c);
+    cls == "CMatrixD" ? w.d(r * c) : w.f(r * c);
+    return obj(cls, 0, w.b);
+}
+Bytes pose2(int v) { return obj("CPose2D", v, v == 0 ? W().f(3).b : W().d(3).b); }
+Bytes pose3(int v)
+{
+    if (v == 0) return obj("mrpt::poses::CPose3D", 0, matrix("CMatrix", 4, 4));  // old name
+    if (v == 1) return obj("CPose3D", 1, matrix("CMatrixD", 4, 4));
+    return obj("CPose3D", v, W().d(v == 2 ? 7 : 12).b);
+}
+Bytes pdf2(int v)
+{
+    W w;
+    w.raw(pose2(1));
+    if (v == 0) w.raw(matrix("CMatrixF", 3, 3));
+    if (v == 1) w.f(6);
+    if (v == 2) w.d(6);
+    return obj("CPosePDFGaussian", v, w.b);
+}
+Bytes pdf3() { return obj("CPose3DPDFGaussian", 1, W().raw(pose3(3)).d(21).b); }
+Bytes scan(int v, std::uint32_t n, bool intensity)
+{
+    W w;
+    w.f(1).u8(1).f(1).raw(pose3(3));
+    if (v < 6) w.raw(matrix("CMatrixF", 2, 3));
+    w.u32(n).f(static_cast<int>(n));
+    if (v >= 1) w.z(static_cast<int>(n));
+    if (v <= 3)
+    {
+        if (v >= 2) w.f(1);
+        if (v >= 3) w.z(8);
+        return obj("mrpt::obs::CObservation2DRangeScan", v, w.b);
+    }
+    w.f(1).z(8).f(1);
+    if (v >= 5) w.u32(2).u8('l').u8('b').d(1);
+    if (v >= 7) w.u8(intensity ? 1 : 0).z(intensity ? 4 * static_cast<int>(n) : 0);
+    return obj("mrpt::obs::CObservation2DRangeScan", v, w.b);
+}
+Bytes odometry(int v, bool encoders, bool velocities)
+{
+    W w;
+    w.raw(pose2(1)).u32(1).u8('o').z(8);
+    if (v >= 1)
+    {
+        w.u8(encoders ? 1 : 0).z(encoders || v < 2 ? 8 : 0).u8(velocities ? 1 : 0);
+        if (v < 2) w.f(2);
+        if (v >= 2 && velocities) w.d(3);
+    }
+    return obj("CObservationOdometry", v, w.b);
+}
+Bytes ranges(int v)
+{
+    W w;
+    w.f(3).u32(2);
+    for (int i = 0; i < 2; ++i)
+    {
+        if (v >= 3) w.u8(i).u8(0);
+        w.raw(pose3(i == 0 ? 3 : 2)).f(1);
+    }
+    if (v >= 1) w.u32(1).u8('r');
+    if (v >= 2) w.z(8);
+    return obj("mrpt::obs::CObservationRange", v, w.b);
+}
+/** An odometry action; `bool_byte` is written for hasEncodersInfo (MRPT reads odd as true). */
+Bytes movement(int v, int method, int model, bool velocities, unsigned bool_byte,
+               std::uint32_t particles = 10)
+{
+    W w;
+    const bool encoders = bool_byte != 0;
+    if (v <= 1)
+    {
+        w.raw(pdf2(2)).u32(static_cast<std::uint32_t>(method));
+        if (v == 1) w.u8(velocities ? 1 : 0).f(2).u8(bool_byte).z(8);
+        return obj("CActionRobotMovement2D", v, w.b);
+    }
+    w.u32(static_cast<std::uint32_t>(method));
+    if (method == 0)
+    {
+        w.raw(pose2(1));
+        if (v == 2) w.z(44);
+        if (v >= 3) w.u32(static_cast<std::uint32_t>(model)).z(v == 3 ? 28 : 24);
+        if (v >= 3) w.u32(particles).f(4);
+        if (v >= 5) w.f(2);
+    }
+    else
+    {
+        w.raw(pdf2(2));
+    }
+    w.u8(velocities ? 1 : 0);
+    if (v < 7) w.f(2);
+    if (v >= 7 && velocities) w.d(3);
+    w.u8(bool_byte).z(v < 7 || encoders ? 8 : 0).z(v >= 6 ? 8 : 0);
+    return obj("CActionRobotMovement2D", v, w.b);
+}
+Bytes frame(int v)
+{
+    W w;
+    if (v < 2) w.z(4);
+    if (v == 0) w.z(8);
+    w.u32(3).raw(scan(7, 3, false)).raw(odometry(2, true, true)).raw(ranges(3));
+    return obj("CSensoryFrame", v, w.b);
+}
+/** A 2 x 2 grid of limits 0 .. 0.2 at 0.1 m (4 cells). */
+Bytes grid(int v, int bits, std::uint32_t owa_length = 2)
+{
+    W w;
+    if (v >= 2) w.u8(static_cast<unsigned>(bits));
+    w.u32(2).u32(2).vals(1, 0.0f).vals(1, 0.2f).vals(1, 0.0f).vals(1, 0.2f).vals(1, 0.1f);
+    w.z(4 * bits / 8);
+    if (v >= 1)
+    {
+        w.f(1).u8(0).f(2).u8(1).z(2).f(1);           // insertionOptions
+        w.z(4).f(4).z(4).f(1).u8(0).f(1).z(4).f(1);  // likelihoodOptions ...
+        w.u8(1).z(4).f(1).z(4).f(1).u32(owa_length).f(2).u8(1);
+        w.raw(v >= 6 ? obj("TMapGenericParams", 0, {1, 1, 1}) : Bytes{0});
+    }
+    if (v >= 4) w.f(2);
+    if (v >= 5) w.u8(0);
+    return obj("mrpt::maps::COccupancyGridMap2D", v, w.b);
+}
+Bytes simpleMap(int v)
+{
+    W w;
+    w.u32(2);
+    for (int i = 0; i < 2; ++i) w.raw(v == 0 ? pdf2(2) : pdf3()).raw(frame(2));
+    return obj("CSimpleMap", v, w.b);
+}
+
+enum class Kind
+{
+    Entry,
+    Grid,
+    SimpleMap
+};
+
+struct Case
+{
+    std::string name;
+    Bytes bytes;
+    Kind kind = Kind::Entry;
+};
+
+std::vector<Case> everyLayout()
+{
+    std::vector<Case> c;
+    const auto add = [&](std::string n, Bytes b, Kind k = Kind::Entry) {
+        c.push_back({std::move(n), std::move(b), k});
+    };
+    for (int v = 0; v <= 7; ++v)
+        for (const bool i : {false, true}) add("scan v" + std::to_string(v), scan(v, 3, i));
+    add("scan without rays", scan(7, 0, true));
+    for (int v = 0; v <= 2; ++v)
+        for (const bool e : {false, true})
+            for (const bool vel : {false, true})
+                add("odometry v" + std::to_string(v), odometry(v, e, vel));
+    for (int v = 0; v <= 3; ++v) add("ranges v" + std::to_string(v), ranges(v));
+    for (int v = 0; v <= 7; ++v)
+        for (int method = 0; method <= 1; ++method)
+            for (int model = 0; model <= 1; ++model)
+                for (const bool vel : {false, true})
+                    for (const unsigned enc : {0u, 1u, 249u})
+                        add("action v" + std::to_string(v) + " method " + std::to_string(method) +
+                                " model " + std::to_string(model) + " encoders byte " +
+                                std::to_string(enc),
+                            obj("CActionCollection", 0,
+                                W().u32(1).raw(movement(v, method, model, vel, enc)).b));
+    for (int v = 0; v <= 2; ++v) add("sensory frame v" + std::to_string(v), frame(v));
+    for (int v = 0; v <= 1; ++v) add("CPose2D v" + std::to_string(v), pose2(v));
+    for (int v = 0; v <= 3; ++v) add("CPose3D v" + std::to_string(v), pose3(v));
+    for (int v = 0; v <= 2; ++v) add("CPosePDFGaussian v" + std::to_string(v), pdf2(v));
+    add("CPose3DPDFGaussian", pdf3());
+    add("CMatrixD", matrix("CMatrixD", 2, 5));
+    // Before MRPT 0.5.5: 4-byte name length, int32 version, no end flag.
+    add("old-format CPose2D", W().u32(7).raw({'C', 'P', 'o', 's', 'e', '2', 'D'}).u32(1).d(3).b);
+    for (int v = 0; v <= 6; ++v)
+        for (const int bits : {8, 16})
+            if (v >= 2 || bits == 8) add("grid v" + std::to_string(v), grid(v, bits), Kind::Grid);
+    for (int v = 0; v <= 1; ++v)
+        add("simple map v" + std::to_string(v), simpleMap(v), Kind::SimpleMap);
+    return c;
+}
+
+mrpt_topoeval::internal::LayoutOptions gridOf4Cells()
+{
+    mrpt_topoeval::internal::LayoutOptions o;
+    o.grid_cells = [](const mrpt_topoeval::internal::StoredGridLimits&) { return 4u; };
+    return o;
+}
+
+/** Runs the check; returns its message ("" if it passed) and the bytes it consumed. */
+std::pair<std::string, std::uint64_t> check(const unsigned char* data, std::size_t size, Kind kind)
+{
+    MemoryLayoutSource src(data, size);
+    try
+    {
+        LayoutChecker c(src, gridOf4Cells());
+        if (kind == Kind::Entry) c.rawlogEntry();
+        if (kind == Kind::Grid) c.occupancyGrid();
+        if (kind == Kind::SimpleMap) c.simpleMap();
+    }
+    catch (const LayoutError& e)
+    {
+        return {e.what(), src.position()};
+    }
+    return {"", src.position()};
+}
+std::pair<std::string, std::uint64_t> check(const Bytes& b, Kind kind)
+{
+    return check(b.data(), b.size(), kind);
+}
+
+/** MRPT reads the object from memory; returns the bytes it consumed (throws on error). */
+std::uint64_t mrptReads(const unsigned char* data, std::size_t size, Kind kind,
+                        mrpt::serialization::CSerializable::Ptr* out = nullptr)
+{
+    mrpt::io::CMemoryStream mem;
+    mem.assignMemoryNotOwn(data, size);
+    auto ar = mrpt::serialization::archiveFrom(mem);
+    if (kind == Kind::Grid)
+    {
+        COccupancyGridMap2D g;
+        ar >> g;
+    }
+    else if (kind == Kind::SimpleMap)
+    {
+        mrpt::maps::CSimpleMap sm;
+        ar >> sm;
+    }
+    else
+    {
+        auto o = ar.ReadObject();
+        if (out) *out = o;
+    }
+    return mem.getPosition();
+}
+std::uint64_t mrptReads(const Bytes& b, Kind kind,
+                        mrpt::serialization::CSerializable::Ptr* out = nullptr)
+{
+    return mrptReads(b.data(), b.size(), kind, out);
+}
+}  // namespace layout
+
+TEST(SerializedLayout, AgreesWithMrptOnEveryVersionOfEveryAcceptedClass)
+{
+    for (const layout::Case& c : layout::everyLayout())
+    {
+        SCOPED_TRACE(c.name);
+        const auto [msg, used] = layout::check(c.bytes, c.kind);
+        EXPECT_EQ(msg, "");
+        EXPECT_EQ(used, c.bytes.size());
+        std::uint64_t mrpt_used = 0;
+        EXPECT_NO_THROW(mrpt_used = layout::mrptReads(c.bytes, c.kind));
+        EXPECT_EQ(mrpt_used, c.bytes.size()) << "MRPT reads another layout";
+    }
+}
+
+TEST(SerializedLayout, ThrunParticleCountIsWhereMrptReadsIt)
+{
+    // MRPT draws that many particles while reading: the check must read the same field.
+    for (int v = 3; v <= 7; ++v)
+    {
+        SCOPED_TRACE(v);
+        const layout::Bytes b = layout::movement(v, 0, 1, false, 0, 37);
+        mrpt::serialization::CSerializable::Ptr o;
+        ASSERT_EQ(layout::mrptReads(b, layout::Kind::Entry, &o), b.size());
+        const auto a = std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(o);
+        ASSERT_TRUE(a);
+        const auto p =
+            std::dynamic_pointer_cast<mrpt::poses::CPosePDFParticles>(a->poseChange.get_ptr());
+        ASSERT_TRUE(p);
+        EXPECT_EQ(p->size(), 37u);
+        const std::string msg =
+            layout::check(layout::movement(v, 0, 1, false, 0, 0x7FFFFFFF), layout::Kind::Entry)
+                .first;
+        EXPECT_NE(msg.find("nParticlesCount = 2147483647"), std::string::npos) << msg;
+    }
+}
+
+TEST(SerializedLayout, LengthFieldsBeyondTheDataAreRefusedNamingFieldAndValue)
+{
+    using layout::Bytes;
+    using layout::W;
+    using Kind = layout::LayoutError::Kind;
+    struct Bad
+    {
+        std::string name;
+        Bytes bytes;
+        std::string field_value;
+        Kind kind;
+    };
+    // A scan with its ray count replaced.
+    const auto scanWithRays = [](std::uint32_t n)
+    {
+        Bytes b = layout::scan(7, 3, false);
+        const std::size_t at = 36 + 9 + layout::pose3(3).size();  // header, 3 fields, pose
+        for (int i = 0; i < 4; ++i) b[at + i] = static_cast<unsigned char>(n >> (8 * i));
+        return b;
+    };
+    // A scan without rays cut after its label length, which says 0xFFFFFF00.
+    Bytes label = layout::scan(7, 0, false);
+    label.resize(label.size() - 12);  // label "lb", deltaPitch, hasIntensity, end flag
+    label[label.size() - 4] = 0;
+    label[label.size() - 3] = label[label.size() - 2] = label[label.size() - 1] = 0xFF;
+    const std::vector<Bad> bad = {
+        {"4 GB label", label, "sensorLabel length = 4294967040", Kind::Truncated},
+        {"scan rays over the data", scanWithRays(90'000), "ray count = 90000", Kind::Truncated},
+        {"scan rays over the limit", scanWithRays(100'001), "ray count = 100001", Kind::Corrupt},
+        {"frame count", layout::obj("CSensoryFrame", 2, W().u32(0x7FFFFFFF).b),
+         "observation count = 2147483647", Kind::Truncated},
+        {"matrix", layout::obj("CMatrixD", 0, W().u32(65536).u32(65536).b), "size = 65536 x 65536",
+         Kind::Truncated},
+        {"OWA_weights", layout::grid(6, 8, 1u << 30), "OWA_weights length = 1073741824",
+         Kind::Truncated},
+        {"3 x 4 homogeneous matrix", layout::obj("CPose3D", 1, layout::matrix("CMatrixD", 3, 4)),
+         "3 x 4", Kind::Corrupt},
+        {"unchecked class", layout::obj("mrpt::obs::CObservationImage", 3, Bytes(40, 0)),
+         "'mrpt::obs::CObservationImage', whose layout topoeval does not check", Kind::Unchecked},
+        {"unchecked class in a frame",
+         layout::obj("CSensoryFrame", 2,
+                     W().u32(1).raw(layout::obj("mrpt::obs::CObservationIMU", 3, Bytes(8, 0))).b),
+         "'mrpt::obs::CObservationIMU', whose layout", Kind::Unchecked},
+        {"unchecked action",
+         layout::obj("CActionCollection", 0,
+                     W().u32(1).raw(layout::obj("mrpt::obs::CObservationImage", 3, Bytes(8, 0))).b),
+         "'mrpt::obs::CObservationImage', whose layout", Kind::Unchecked},
+        {"null object", W().u8(0x87).raw({'n', 'u', 'l', 'l', 'p', 't', 'r'}).u8(0x88).b,
+         "null object", Kind::Corrupt},
+        {"unknown version", layout::obj("CPose2D", 2, W().d(3).b), "version 2 of CPose2D",
+         Kind::Corrupt},
+        {"ambiguous bool",
+         layout::obj("CActionCollection", 0, W().u32(1).raw(layout::movement(7, 0, 0, false, 2)).b),
+         "hasEncodersInfo = 2", Kind::Corrupt},
+        {"bad end flag", Bytes(), "end flag = 0", Kind::Corrupt},
+    };
+    for (Bad c : bad)
+    {
+        SCOPED_TRACE(c.name);
+        layout::Kind kind = layout::Kind::Entry;
+        if (c.name == "OWA_weights") kind = layout::Kind::Grid;
+        if (c.name == "bad end flag")
+        {
+            c.bytes = layout::pose2(1);
+            c.bytes.back() = 0;
+        }
+        const auto [msg, used] = layout::check(c.bytes, kind);
+        EXPECT_NE(msg.find(c.field_value), std::string::npos) << msg;
+        layout::MemoryLayoutSource src(c.bytes.data(), c.bytes.size());
+        try
+        {
+            layout::LayoutChecker ch(src, layout::gridOf4Cells());
+            kind == layout::Kind::Grid ? ch.occupancyGrid() : (void)ch.rawlogEntry();
+            ADD_FAILURE() << "accepted";
+        }
+        catch (const layout::LayoutError& e)
+        {
+            EXPECT_EQ(static_cast<int>(e.kind()), static_cast<int>(c.kind)) << e.what();
+        }
+    }
+}
+
+TEST(SerializedLayout, RealRawlogsAndMapsPassWhole)
+{
+    // Every entry of every shared rawlog (old and new class versions, gz): the check consumes
+    // exactly what MRPT reads.
+    bool any = false;
+    for (const char* name :
+         {"rawlogs/driving_in_office.rawlog", "rawlogs/driving_in_office_obs.rawlog",
+          "rawlogs/intel.rawlog", "rawlogs/intel_fixed-action-timestamps.rawlog",
+          "rawlogs/intel_obs-format.rawlog", "rawlogs/intel-corrected.rawlog",
+          "rawlogs/aces-corrected.rawlog", "rawlogs/csail-corrected.rawlog",
+          "rawlogs/freiburg-101-corrected.rawlog", "slam_maps/intel_icp-slam.simplemap"})
+    {
+        const auto p = sharedDataFile(name);
+        if (!p) continue;
+        any = true;
+        SCOPED_TRACE(name);
+        layout::Bytes data;
+        mrpt::io::CFileGZInputStream in(*p);
+        unsigned char buf[65536];
+        for (std::size_t got; (got = in.Read(buf, sizeof buf)) > 0 && got <= sizeof buf;)
+            data.insert(data.end(), buf, buf + got);
+        const bool simplemap = std::string(name).find("simplemap") != std::string::npos;
+        std::size_t pos = 0, entries = 0;
+        while (pos < data.size())
+        {
+            const auto kind = simplemap ? layout::Kind::SimpleMap : layout::Kind::Entry;
+            const auto [msg, used] = layout::check(data.data() + pos, data.size() - pos, kind);
+            ASSERT_EQ(msg, "") << "entry " << entries;
+            ASSERT_EQ(layout::mrptReads(data.data() + pos, data.size() - pos, kind), used)
+                << "entry " << entries;
+            pos += used;
+            ++entries;
+        }
+        EXPECT_GT(entries, 0u);
+    }
+    if (!any) GTEST_SKIP() << "../shared/data is not available";
+}
+
+TEST(MapIoGridmap, LengthFieldsAreCheckedBeforeMrptAllocates)
+{
+    const std::string dir = makeTempDir("mapio_layout");
+    const auto write = [&](const std::string& name, const layout::Bytes& b)
+    {
+        std::ofstream(dir + "/" + name, std::ios::binary)
+            .write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
+        return dir + "/" + name;
+    };
+    // The hand-made grid loads (4 cells) ...
+    const std::string ok = write("ok.gridmap", layout::grid(6, 8));
+    EXPECT_EQ(loadMap(ok).grid.getSizeX(), 2u);
+    // ... and with OWA_weights declaring 2^30 floats (MRPT allocated 4 GB for it) is refused.
+    const std::string owa_path = write("owa.gridmap", layout::grid(6, 8, 1u << 30));
+    std::string msg = expectInputError([&] { loadMap(owa_path); }, owa_path);
+    EXPECT_NE(msg.find("OWA_weights length = 1073741824"), std::string::npos) << msg;
+    // Limits far from the origin: MRPT's float arithmetic no longer follows ours.
+    layout::Bytes far = layout::grid(6, 8);
+    const float x_min = 1e7f, x_max = 1e7f + 2.0f;  // 10^8 cells of 0.1 m from the origin
+    std::memcpy(&far[33 + 1 + 8], &x_min, 4);       // after the header, bits and size_x, size_y
+    std::memcpy(&far[33 + 1 + 8 + 4], &x_max, 4);
+    const std::string far_path = write("far.gridmap", far);
+    msg = expectInputError([&] { loadMap(far_path); }, far_path);
+    EXPECT_NE(msg.find("2^24 cells"), std::string::npos) << msg;
+    // 16-bit cells: twice the bytes.
+    const std::string wide = write("wide.gridmap", layout::grid(6, 16));
+    EXPECT_EQ(loadMap(wide).grid.getSizeY(), 2u);
 }
 
 }  // namespace

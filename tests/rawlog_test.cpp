@@ -139,6 +139,31 @@ TEST(RawlogScorer, ObservationFormatGzUntimedOdometryAndUnknownObjects)
     EXPECT_EQ(res.rows.size(), 3u);
 }
 
+// Real rawlogs hold other sensors (cameras, IMU, GPS): entries and frames of classes whose
+// serialized layout topoeval does not check are read by MRPT as they are, and skipped.
+TEST(RawlogScorer, OtherSensorsAreReadAndSkippedInBothFormats)
+{
+    for (const bool obs_format : {false, true})
+    {
+        SCOPED_TRACE(obs_format ? "observations" : "action/sensory-frame pairs");
+        const TempDir dir;
+        const std::string log = dir.path + "/imu.rawlog";
+        SimulatedRawlogOptions sim;
+        sim.observation_format = obs_format;
+        sim.other_sensors = true;
+        auto poses = officePath();
+        poses.resize(60);
+        const std::size_t n = writeSimulatedRawlog(log, office(), poses, sim);
+        RawlogScorer scorer(everyScans(30), Parameters());
+        const RawlogScoreResult res = scorer.run(log, office());
+        EXPECT_EQ(res.stop, RawlogStop::EndOfFile) << res.stop_message;
+        EXPECT_EQ(res.stats.scans, n);
+        EXPECT_EQ(res.stats.other_observations, n / 10);
+        EXPECT_EQ(res.stats.entries, obs_format ? 2 * n + n / 10 : 2 * n);
+        EXPECT_EQ(res.rows.size(), 2u);
+    }
+}
+
 TEST(RawlogScorer, UntimedActionsAreStampedAndScansWithoutOdometryCounted)
 {
     const TempDir dir;

@@ -10,6 +10,7 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationIMU.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose2D.h>
@@ -28,10 +29,13 @@ struct SimulatedRawlogOptions
     bool observation_format = false;  //!< Observation-only instead of action/sensory-frame pairs.
     bool untimed_odometry = false;    //!< Odometry without timestamps (as intel.rawlog).
     bool unknown_objects = false;     //!< A CPose2D object every 10 scans (not a rawlog class).
-    bool gzip = false;                //!< Compressed output.
-    double step_m = 0.25;             //!< Distance between scans [m].
-    double turn_step_deg = 15.0;      //!< Rotation between scans when turning in place [deg].
-    double scan_period_s = 0.1;       //!< Time between scans [s].
+    /** An IMU reading every 10 scans (in the scan's sensory frame, or an entry of its own):
+     * another sensor, of a class whose layout topoeval does not check. */
+    bool other_sensors = false;
+    bool gzip = false;            //!< Compressed output.
+    double step_m = 0.25;         //!< Distance between scans [m].
+    double turn_step_deg = 15.0;  //!< Rotation between scans when turning in place [deg].
+    double scan_period_s = 0.1;   //!< Time between scans [s].
     float max_range_m = 12.0f;
 };
 
@@ -108,12 +112,21 @@ inline std::size_t writeSimulatedRawlog(const std::string& path,
         scan->rightToLeft = true;
         grid.laserScanSimulator(*scan, poses[i], 0.5f, 361);
         scan->timestamp = t;
+        mrpt::obs::CObservationIMU::Ptr imu;
+        if (opts.other_sensors && i % 10 == 3)
+        {
+            imu = std::make_shared<mrpt::obs::CObservationIMU>();
+            imu->sensorLabel = "IMU";
+            imu->timestamp = t;
+            imu->set(mrpt::obs::IMU_WZ, 0.1);
+        }
         if (opts.observation_format)
         {
             auto odo = std::make_shared<mrpt::obs::CObservationOdometry>();
             odo->odometry = poses[i];
             odo->timestamp = opts.untimed_odometry ? INVALID_TIMESTAMP : t;
             ar << *odo << *scan;
+            if (imu) ar << *imu;
         }
         else
         {
@@ -126,6 +139,7 @@ inline std::size_t writeSimulatedRawlog(const std::string& path,
             acts.insert(mov);
             mrpt::obs::CSensoryFrame sf;
             sf.insert(scan);
+            if (imu) sf.insert(imu);
             ar << acts << sf;
         }
         if (opts.unknown_objects && i % 10 == 5) ar << mrpt::poses::CPose2D(1, 2, 3);

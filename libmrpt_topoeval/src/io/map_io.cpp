@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "internal/image_header.h"
+#include "internal/serialized_layout.h"
 
 namespace fs = std::filesystem;
 
@@ -875,16 +876,15 @@ private:
     bool m_hit_end = false;
 };
 
-/** The start of an MRPT serialized object (CArchive::WriteObject) and the bytes after it. */
+/** The start of an MRPT serialized object (CArchive::WriteObject). */
 struct ObjectHeader
 {
     std::string class_name;  //!< As stored, e.g. "mrpt::maps::COccupancyGridMap2D".
     int version = 0;
-    std::vector<unsigned char> payload;  //!< The first bytes of the object's data.
 };
 
 /** Reads the class name and version of the object at the start of a serialized file without
- * deserializing it, so a wrong class or an absurd size is reported before MRPT allocates.
+ * deserializing it, so that a file of another class gets its own message.
  * Format: (0x80 | name length), name, uint8 version; or, before MRPT 0.5.5, name length, three
  * zero bytes, name, int32 version. */
 ObjectHeader peekObjectHeader(const std::string& path)
@@ -908,17 +908,10 @@ ObjectHeader peekObjectHeader(const std::string& path)
         if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':')) notMrpt();
     pos += name_len;
     if (old_format)
-    {
         h.version = static_cast<int>(b[pos] | (b[pos + 1] << 8) | (b[pos + 2] << 16) |
                                      (static_cast<unsigned>(b[pos + 3]) << 24));
-        pos += 4;
-    }
     else
-    {
         h.version = static_cast<std::int8_t>(b[pos]);
-        pos += 1;
-    }
-    h.payload.assign(b.begin() + static_cast<std::ptrdiff_t>(pos), b.end());
     return h;
 }
 
@@ -937,30 +930,147 @@ void expectClass(const std::string& path, const ObjectHeader& h, const std::stri
                        format_name + " file must hold");
 }
 
-/** The grid size COccupancyGridMap2D::serializeFrom() will allocate, from the limits stored
- * after the object header (the stored cell counts are ignored by MRPT: it calls setSize() on
- * the limits). Layout since version 2: uint8 bits per cell, uint32 size_x, size_y, float
- * x_min, x_max, y_min, y_max, resolution. */
-void checkStoredGridSize(const std::string& path, const ObjectHeader& h, const MapLoadOptions& opts)
+/** The number of cells COccupancyGridMap2D::serializeFrom() will allocate and read for the
+ * limits stored in a file; refuses what it must not allocate. MRPT ignores the stored cell
+ * counts: it calls setSize() on the stored limits, in float, and sizes the grid from them. */
+std::uint64_t storedGridCells(const std::string& path, const internal::StoredGridLimits& g,
+                              const MapLoadOptions& opts)
 {
-    if (h.version < 0 || h.version > 6)
-        fail(path, "stores COccupancyGridMap2D serialization version " + std::to_string(h.version) +
-                       ", which MRPT 2.5 cannot read (0..6)");
-    const std::size_t off = h.version >= 2 ? 1 : 0;
-    if (h.payload.size() < off + 8 + 5 * 4) fail(path, "truncated serialized grid");
-    float f[5];
-    std::memcpy(f, h.payload.data() + off + 8, sizeof f);  // little-endian, as MRPT writes
-    const double x_min = f[0], x_max = f[1], y_min = f[2], y_max = f[3], res = f[4];
+    const double x_min = g.x_min, x_max = g.x_max, y_min = g.y_min, y_max = g.y_max,
+                 res = g.resolution;
     if (!(std::isfinite(x_min) && std::isfinite(x_max) && std::isfinite(y_min) &&
           std::isfinite(y_max) && std::isfinite(res) && res > 0 && x_max > x_min && y_max > y_min))
         fail(path, "stores invalid grid limits (x " + num(x_min) + " .. " + num(x_max) + ", y " +
                        num(y_min) + " .. " + num(y_max) + ", resolution " + num(res) + ")");
+    // Far from the origin, float limits are coarser than a cell and MRPT's float arithmetic
+    // (and its int cell counts) no longer follow the double estimate below; 2^24 cells keep
+    // every rounding within a cell or two (0.84 km at 0.05 m/cell... 16777 km at 1 m/cell).
+    constexpr double kMaxCellsFromOrigin = 16777216.0;
+    for (const double v : {x_min, x_max, y_min, y_max})
+        if (std::abs(v / res) > kMaxCellsFromOrigin)
+            fail(path, "stores grid limits (x " + num(x_min) + " .. " + num(x_max) + ", y " +
+                           num(y_min) + " .. " + num(y_max) + ") more than 2^24 cells of " +
+                           num(res) +
+                           " m from the origin: not representable in MRPT's float "
+                           "grid coordinates");
     // Same snapping as setSize(), in double so absurd values cannot overflow.
     const double nx = std::round(x_max / res) - std::round(x_min / res);
     const double ny = std::round(y_max / res) - std::round(y_min / res);
-    if (nx * ny > static_cast<double>(opts.max_cells))
-        fail(path, "stores a grid of " + num(nx) + " x " + num(ny) +
+    const auto over = [&](double cx, double cy)
+    {
+        fail(path, "stores a grid of " + num(cx) + " x " + num(cy) +
                        " cells, over max_cells = " + std::to_string(opts.max_cells));
+    };
+    if (nx * ny > static_cast<double>(opts.max_cells)) over(nx, ny);
+    // The exact count, from MRPT's own setSize() (within a cell or two of the estimate, so the
+    // probe allocates about what the real load will).
+    COccupancyGridMap2D probe;
+    probe.setSize(g.x_min, g.x_max, g.y_min, g.y_max, g.resolution, 0.5f);
+    const std::uint64_t cells = probe.getRawMap().size();
+    if (cells > opts.max_cells) over(probe.getSizeX(), probe.getSizeY());
+    return cells;
+}
+
+/** The decompressed bytes of a serialized file, streamed to the layout check: the cells of a
+ * big grid are skipped, not kept. At most `limit` bytes are read; a plain file also knows
+ * where it ends. Gzip errors end the data (error() says so). */
+class StreamLayoutSource final : public internal::LayoutSource
+{
+public:
+    StreamLayoutSource(const std::string& path, std::uint64_t limit, std::string limit_text)
+        : m_in(path), m_limit(limit), m_limit_text(std::move(limit_text))
+    {
+        unsigned char magic[2] = {0, 0};
+        std::ifstream f(path, std::ios::binary);
+        f.read(reinterpret_cast<char*>(magic), 2);
+        if (!(f.gcount() == 2 && magic[0] == 0x1f && magic[1] == 0x8b))
+            m_file_bytes = fs::file_size(path);
+    }
+    Result take(void* dst, std::uint64_t n) override
+    {
+        if (n > m_limit - m_pos) return Result::Limit;
+        if (n > m_file_bytes - std::min(m_pos, m_file_bytes)) return Result::End;
+        auto* out = static_cast<unsigned char*>(dst);
+        unsigned char scratch[1 << 16];
+        std::uint64_t done = 0;
+        while (done < n)
+        {
+            const std::size_t want =
+                static_cast<std::size_t>(std::min<std::uint64_t>(n - done, sizeof scratch));
+            std::size_t got = 0;
+            try
+            {
+                got = m_in.readSome(out ? out + done : scratch, want);
+            }
+            catch (const std::exception&)
+            {
+                m_error = m_in.error();
+                return Result::End;
+            }
+            m_pos += got;
+            done += got;
+            if (got < want) return Result::End;
+        }
+        return Result::Ok;
+    }
+    std::uint64_t position() const override { return m_pos; }
+    std::uint64_t available() const override
+    {
+        const std::uint64_t cap = std::min(m_limit, m_file_bytes);
+        return cap - std::min(m_pos, cap);
+    }
+    bool availableIsLimit() const override { return m_limit <= m_file_bytes; }
+    std::string limitText() const override { return m_limit_text; }
+    const std::string& error() const { return m_error; }
+
+private:
+    CheckedGzInput m_in;
+    std::uint64_t m_limit;
+    std::string m_limit_text;
+    std::uint64_t m_file_bytes = std::numeric_limits<std::uint64_t>::max();  // gz: unknown
+    std::uint64_t m_pos = 0;
+    std::string m_error;
+};
+
+/** Turns a refused layout into the one-line message of a map file. */
+[[noreturn]] void failLayout(const std::string& path, const internal::LayoutError& e,
+                             const std::string& gzip_error)
+{
+    if (!gzip_error.empty()) fail(path, gzip_error);
+    switch (e.kind())
+    {
+        case internal::LayoutError::Kind::Truncated:
+            fail(path, std::string("truncated or corrupt: ") + e.what());
+        case internal::LayoutError::Kind::TooLarge:
+            fail(path, std::string("is too large: ") + e.what());
+        case internal::LayoutError::Kind::Corrupt:
+        case internal::LayoutError::Kind::Unchecked:
+            break;
+    }
+    fail(path, std::string("is corrupt: ") + e.what());
+}
+
+/** Walks the whole serialized grid (internal/serialized_layout.h) before MRPT reads it, so
+ * that no length field can make MRPT allocate more than the grid's cells (checked against
+ * max_cells) and the bytes the file really holds. */
+void checkGridLayout(const std::string& path, const MapLoadOptions& opts)
+{
+    // Cells (8 or 16 bits) of a grid within max_cells, plus 1 MiB for its options.
+    const std::uint64_t limit = 2 * opts.max_cells + (std::uint64_t{1} << 20);
+    StreamLayoutSource src(path, limit,
+                           "the " + std::to_string(limit) + " bytes a grid within max_cells = " +
+                               std::to_string(opts.max_cells) + " can take");
+    internal::LayoutOptions lo;
+    lo.grid_cells = [&](const internal::StoredGridLimits& g)
+    { return storedGridCells(path, g, opts); };
+    try
+    {
+        internal::LayoutChecker(src, lo).occupancyGrid();
+    }
+    catch (const internal::LayoutError& e)
+    {
+        failLayout(path, e, src.error());
+    }
 }
 
 /** Deserializes one object, turning MRPT's errors into a one-line message. */
@@ -999,7 +1109,7 @@ LoadedMap loadGridmap(const std::string& path, const MapLoadOptions& opts)
 {
     const ObjectHeader h = peekObjectHeader(path);
     expectClass(path, h, "COccupancyGridMap2D", ".gridmap");
-    checkStoredGridSize(path, h, opts);
+    checkGridLayout(path, opts);
     LoadedMap out;
     out.file = path;
     out.format = "gridmap";
@@ -1118,98 +1228,23 @@ std::vector<unsigned char> decompressAll(const std::string& path)
     return data;
 }
 
-std::uint32_t le32At(const std::vector<unsigned char>& d, std::size_t pos)
+/** Walks the whole serialized simple map (internal/serialized_layout.h) before MRPT reads
+ * it: MRPT sizes its keyframe list, observation lists, scans and strings from counts stored in
+ * the file before it reads the data they announce, so every count is checked against the
+ * bytes that really follow it. The decompressed file is in memory: the check knows its end. */
+void checkSimplemapLayout(const std::string& path, const std::vector<unsigned char>& data)
 {
-    return d[pos] | (d[pos + 1] << 8) | (d[pos + 2] << 16) | (std::uint32_t{d[pos + 3]} << 24);
-}
-
-/** The bytes CArchive::WriteObject() puts before an object of class `full_name`. */
-std::vector<unsigned char> objectHeaderBytes(const std::string& full_name)
-{
-    std::vector<unsigned char> h(1 + full_name.size());
-    h[0] = static_cast<unsigned char>(0x80 | full_name.size());
-    std::copy(full_name.begin(), full_name.end(), h.begin() + 1);
-    return h;
-}
-
-/** Positions just after every object header of class `name`, stored with or without its
- * namespace `ns`, in a serialized stream. */
-std::vector<std::size_t> findObjects(const std::vector<unsigned char>& d, const std::string& ns,
-                                     const std::string& name)
-{
-    std::vector<std::size_t> out;
-    for (const std::string& full : {ns + "::" + name, name})
+    internal::MemoryLayoutSource src(data.data(), data.size());
+    try
     {
-        const std::vector<unsigned char> header = objectHeaderBytes(full);
-        auto it = d.begin();
-        while ((it = std::search(it, d.end(), header.begin(), header.end())) != d.end())
-        {
-            it += static_cast<std::ptrdiff_t>(header.size());
-            out.push_back(static_cast<std::size_t>(it - d.begin()));
-        }
+        internal::LayoutChecker(src).simpleMap();
     }
-    return out;
-}
-
-/** MRPT's deserializers resize their buffers to the counts stored in the file before reading
- * the data those counts announce: a corrupt count makes them allocate and zero gigabytes, and
- * CObservation2DRangeScan (through MRPT's aligned allocator, which returns null instead of
- * throwing) then crashes. So the counts of a simple map are checked against the bytes that
- * follow them before MRPT sees the file:
- * - CSimpleMap v1: uint32 keyframe count after the version; each keyframe takes at least two
- *   object headers (>= 16 bytes);
- * - CSensoryFrame v0-2: uint32 observation count (>= 4 bytes each), which MRPT reads into a
- *   deque: a corrupt count grows it chunk by chunk until memory runs out;
- * - CObservation2DRangeScan v6-7: float aperture, bool, float maxRange, a CPose3D object
- *   (v3: 12 doubles), then uint32 ray count N, followed by 5 bytes per ray.
- * Objects in other layouts (older versions, or damaged before their count) are left to MRPT:
- * this guards against the damage random corruption most often does, not against every crafted
- * file. */
-void checkStoredCounts(const std::string& path, const ObjectHeader& h,
-                       const std::vector<unsigned char>& d)
-{
-    const auto bad = [&](const std::string& what, std::uint64_t n, std::size_t pos)
+    catch (const internal::LayoutError& e)
     {
-        fail(path, "is corrupt: " + what + " declares a count of " + std::to_string(n) + " with " +
-                       std::to_string(d.size() - pos) + " bytes left");
-    };
-    if (h.version == 1 && h.payload.size() >= 4)
-    {
-        const std::uint64_t n = le32At(h.payload, 0);
-        if (n > d.size() / 16) bad("the keyframe list", n, 0);
-    }
-    for (const std::size_t p : findObjects(d, "mrpt::obs", "CSensoryFrame"))
-    {
-        if (p >= d.size() || d[p] > 2) continue;
-        // v0 and v1 store a uint32 ID first, v0 also an int64 timestamp.
-        const std::size_t q = p + 1 + (d[p] < 2 ? 4 : 0) + (d[p] == 0 ? 8 : 0);
-        if (q + 4 > d.size()) continue;
-        const std::uint64_t n = le32At(d, q);
-        if (n > (d.size() - q - 4) / 4) bad("a sensory frame", n, q + 4);
-    }
-    for (const std::size_t p : findObjects(d, "mrpt::obs", "CObservation2DRangeScan"))
-    {
-        if (p + 1 + 9 > d.size() || (d[p] != 6 && d[p] != 7)) continue;
-        std::size_t q = p + 1 + 9;  // version, aperture, rightToLeft, maxRange
-        bool pose_ok = false;
-        for (const std::string pose : {"mrpt::poses::CPose3D", "CPose3D"})
-        {
-            std::vector<unsigned char> header = objectHeaderBytes(pose);
-            header.push_back(3);  // CPose3D serialization version 3: 12 doubles
-            const std::size_t end_flag = q + header.size() + 96;
-            if (end_flag + 1 + 4 <= d.size() &&
-                std::equal(header.begin(), header.end(),
-                           d.begin() + static_cast<std::ptrdiff_t>(q)) &&
-                d[end_flag] == 0x88)
-            {
-                q = end_flag + 1;
-                pose_ok = true;
-                break;
-            }
-        }
-        if (!pose_ok) continue;
-        const std::uint64_t n = le32At(d, q);
-        if (n > (d.size() - q - 4) / 5) bad("a laser scan", n, q + 4);
+        // A keyframe that holds another sensor (a camera...): what comes before it was
+        // checked; MRPT reads the rest as it is, as for rawlogs (doc/reliability.md).
+        if (e.kind() == internal::LayoutError::Kind::Unchecked) return;
+        failLayout(path, e, "");
     }
 }
 
@@ -1218,7 +1253,7 @@ LoadedMap loadSimplemap(const std::string& path, const MapLoadOptions& opts)
     checkResolutionOption(path, opts);
     const ObjectHeader h = peekObjectHeader(path);
     expectClass(path, h, "CSimpleMap", ".simplemap");
-    checkStoredCounts(path, h, decompressAll(path));
+    checkSimplemapLayout(path, decompressAll(path));
     mrpt::maps::CSimpleMap sm;
     readObject(path, sm, "simple map");
     if (sm.empty()) fail(path, "holds no keyframes (nothing to render)");

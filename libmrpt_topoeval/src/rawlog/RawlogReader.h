@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace mrpt_topoeval::rawlog
 {
@@ -23,8 +24,13 @@ public:
         Corrupt,    //!< An entry cannot be decoded or exceeds the size limit.
     };
 
-    /** Opens `path` (gz or plain). \throws InputError if it is missing or unreadable. */
-    RawlogReader(const std::string& path, std::uint64_t max_entry_bytes);
+    /** Opens `path` (gz or plain). Entries of classes whose layout is not checked before MRPT
+     * reads them (cameras, IMU, GPS...: internal/serialized_layout.h) are read by MRPT as they
+     * are if `read_unchecked_classes`, else refused as corrupt (the fuzz target's choice: it
+     * exercises the check, not MRPT's readers of every sensor).
+     * \throws InputError if it is missing or unreadable. */
+    RawlogReader(const std::string& path, std::uint64_t max_entry_bytes,
+                 bool read_unchecked_classes = true);
 
     /** Reads the next entry. On Truncated / Corrupt, `why` says what went wrong (without the
      * file name); the reader must not be used afterwards. */
@@ -44,10 +50,15 @@ public:
 private:
     /** True if no byte is left (after a failed read). */
     bool atEndOfData();
+    /** The rest of an entry whose class the layout check does not know, read by MRPT from the
+     * bytes `checked` so far and the rest of the file. */
+    Status readUnchecked(const std::vector<unsigned char>& checked,
+                         mrpt::serialization::CSerializable::Ptr& obj, std::string& why);
 
     std::string m_path;
     mrpt::io::CFileGZInputStream m_in;
     std::uint64_t m_max_entry_bytes;
+    bool m_read_unchecked_classes = true;
     std::uint64_t m_file_bytes = 0;
     bool m_gzipped = false;
     std::size_t m_entries = 0;
