@@ -43,20 +43,6 @@ struct MapResult
     std::string error;
     QualityReport report;
 
-    /** Mean of the non-empty local consistency classes' scores (as `quality` combines them),
-     * 0 when there is none. */
-    double consistency() const
-    {
-        double sum = 0.0;
-        int n = 0;
-        for (const ConsistencyClass& c : report.local_consistency)
-            if (c.pairs > 0)
-            {
-                sum += c.score;
-                ++n;
-            }
-        return n ? sum / n : 0.0;
-    }
     bool matched() const { return ok && !report.match.pairs.empty(); }
 };
 
@@ -181,7 +167,7 @@ Ranking rankMaps(const std::vector<MapResult>& results)
         quality[i] = m.report.quality;
         coverage[i] = m.report.coverage;
         accuracy[i] = m.report.relative_accuracy.score;
-        consistency[i] = m.consistency();
+        consistency[i] = m.report.consistencyScore();
         // By score (1 / (1 + degree), 0 when nothing matched): a map that matched nothing
         // has degree 0 but is not the least broken.
         brokenness[i] = m.report.brokenness.score;

@@ -69,6 +69,10 @@ struct QualityReport
     std::vector<std::string> messages;
     std::map<std::string, double> timing_ms;
 
+    /** Mean score of the non-empty local consistency classes, as `quality` combines them; 0
+     * when there is none. */
+    double consistencyScore() const;
+
     /** A few lines, like Ceres' brief report. */
     std::string briefReport() const;
     /** Every figure, group and class. */

@@ -380,6 +380,11 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
                             const GraphMatch& match, const QualityParameters& p)
 {
     p.validate();
+    // Before anything indexes the graphs with the match's pairs.
+    for (const auto& pr : match.pairs)
+        if (pr.ground_truth < 0 || pr.ground_truth >= int(ground_truth.vertices.size()) ||
+            pr.map < 0 || pr.map >= int(map.vertices.size()))
+            throw InputError("the match names a vertex the graphs do not have");
     QualityReport r;
     r.match = match;
     // The ground truth's matching view: its matchable vertices and, for brokenness, adjacency.
@@ -400,10 +405,6 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
         r.messages.push_back("nothing was matched: coverage and quality are 0");
         return r;
     }
-    for (const auto& pr : match.pairs)
-        if (pr.ground_truth < 0 || pr.ground_truth >= int(ground_truth.vertices.size()) ||
-            pr.map < 0 || pr.map >= int(map.vertices.size()))
-            throw InputError("the match names a vertex the graphs do not have");
 
     // Coverage (paper IV): share of the ground truth's matchable vertices that were matched.
     r.coverage = r.gt_vertices ? double(match.pairs.size()) / double(r.gt_vertices) : 0.0;
@@ -431,15 +432,7 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
 
     // Quality: weighted mean of coverage, relative accuracy, the mean of the non-empty
     // consistency classes, and brokenness (doc/quality.md).
-    double csum = 0.0;
-    int cn = 0;
-    for (const auto& c : r.local_consistency)
-        if (c.pairs > 0)
-        {
-            csum += c.score;
-            ++cn;
-        }
-    const double consistency = cn ? csum / cn : 0.0;
+    const double consistency = r.consistencyScore();
     const double wsum =
         p.weight_coverage + p.weight_relative_accuracy + p.weight_consistency + p.weight_brokenness;
     r.quality =

@@ -26,6 +26,19 @@ std::string consistencyLine(const QualityReport& r)
 }
 }  // namespace
 
+double QualityReport::consistencyScore() const
+{
+    double sum = 0.0;
+    int n = 0;
+    for (const ConsistencyClass& c : local_consistency)
+        if (c.pairs > 0)
+        {
+            sum += c.score;
+            ++n;
+        }
+    return n ? sum / n : 0.0;
+}
+
 std::string QualityReport::briefReport() const
 {
     std::string s;
