@@ -355,3 +355,24 @@ TEST(QualityEvaluator, DISABLED_WriteDocMaps)
     save(makeCampusMap(), "campus");
     for (int n = 1; n <= 3; ++n) save(brokenCampus(n), "campus_broken_" + std::to_string(n));
 }
+
+// rank, series and rawlog build the ground truth's graph once and pass it in: the same report.
+TEST(QualityEvaluator, PrebuiltGroundTruthGraphGivesTheSameReport)
+{
+    const auto campus = makeCampusMap();
+    const auto broken = brokenCampus(1);
+    const Parameters params;
+    const QualityReport a = evaluate(campus, broken, params);
+    const TopologyGraph gt = buildTopologyGraph(campus, params.graph);
+    const QualityReport b = evaluate(gt, campus, broken, params);
+    EXPECT_EQ(a.quality, b.quality);
+    EXPECT_EQ(a.coverage, b.coverage);
+    EXPECT_EQ(a.brokenness.degree, b.brokenness.degree);
+    ASSERT_EQ(a.match.pairs.size(), b.match.pairs.size());
+    for (std::size_t i = 0; i < a.match.pairs.size(); ++i)
+    {
+        EXPECT_EQ(a.match.pairs[i].ground_truth, b.match.pairs[i].ground_truth);
+        EXPECT_EQ(a.match.pairs[i].map, b.match.pairs[i].map);
+    }
+    EXPECT_EQ(a.messages, b.messages);
+}

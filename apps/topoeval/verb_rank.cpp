@@ -3,6 +3,7 @@
 // prints them ranked per attribute and overall, like the paper's Table I; optionally as CSV.
 
 #include <mrpt/core/exceptions.h>
+#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/output.h>
@@ -46,16 +47,17 @@ struct MapResult
     bool matched() const { return ok && !report.match.pairs.empty(); }
 };
 
-/** Loads and evaluates one map against the (shared, read-only) ground-truth grid. Never
- * throws: the outcome, good or bad, is in the result, so one bad map does not stop the others. */
-void evaluateOne(const mrpt::maps::COccupancyGridMap2D& gt_grid, const Parameters& params,
-                 MapResult& res)
+/** Loads and evaluates one map against the (shared, read-only) ground truth and its graph.
+ * Never throws: the outcome, good or bad, is in the result, so one bad map does not stop the
+ * others. */
+void evaluateOne(const TopologyGraph& gt_graph, const mrpt::maps::COccupancyGridMap2D& gt_grid,
+                 const Parameters& params, MapResult& res)
 {
     try
     {
         const LoadedMap m = loadMap(res.file, params.map_load);
         TopologyGraph graph;
-        res.report = evaluate(gt_grid, m.grid, params, nullptr, &graph);
+        res.report = evaluate(gt_graph, gt_grid, m.grid, params, &graph);
         if (graph.vertices.empty() && graph.warnings.empty())
             res.report.messages.push_back("map: the Topology Graph is empty");
         res.ok = true;
@@ -332,8 +334,10 @@ int verbRank(int argc, char** argv)
     inputs.push_back(opts.config());
     if (!csv_path.empty()) checkOutputPath(csv_path, force, inputs);
 
-    // The ground truth once, shared read-only by every evaluation: nothing to rank without it.
+    // The ground truth and its graph once, shared read-only by every evaluation: nothing to
+    // rank without it.
     const LoadedMap gt = loadMap(gt_path, params.map_load);
+    const TopologyGraph gt_graph = buildTopologyGraph(gt.grid, params.graph);
 
     std::vector<MapResult> results(args.size() - 1);
     for (std::size_t i = 0; i < results.size(); ++i) results[i].file = args[i + 1];
@@ -351,7 +355,7 @@ int verbRank(int argc, char** argv)
     const auto work = [&]
     {
         for (std::size_t i = next++; i < results.size(); i = next++)
-            evaluateOne(gt.grid, worker_params, results[i]);
+            evaluateOne(gt_graph, gt.grid, worker_params, results[i]);
     };
     std::vector<std::thread> pool;
     try

@@ -2,6 +2,7 @@
 // `topoeval series GT MAP...`: the scoring of `rawlog` over maps saved by another SLAM system
 // (a map every N steps): the same scores.csv and scores.png (doc/rawlog.md).
 
+#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/map_io.h>
@@ -156,6 +157,7 @@ int verbSeries(int argc, char** argv)
     // in the list is bad input with nothing written. Reading is a small part of a map's
     // scoring (the graphs are most of it); the maps are not kept, to hold one at a time.
     for (const auto& m : maps) loadMap(m, params.map_load);
+    const TopologyGraph gt_graph = buildTopologyGraph(gt.grid, params.graph);
 
     // From here on: if the run fails before its first row, `folder` and `csv` remove what they
     // created (and only that).
@@ -170,7 +172,7 @@ int verbSeries(int argc, char** argv)
         {
             const LoadedMap m = loadMap(maps[i], params.map_load);
             const auto t0 = Clock::now();
-            const QualityReport report = evaluate(gt.grid, m.grid, params);
+            const QualityReport report = evaluate(gt_graph, gt.grid, m.grid, params);
             ScoreRow row = scoreRowFromReport(report);
             row.step = static_cast<int>(i) + 1;
             row.entry = numberInName(maps[i], i);

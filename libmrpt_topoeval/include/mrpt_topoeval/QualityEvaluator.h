@@ -53,4 +53,13 @@ QualityReport evaluate(const mrpt::maps::COccupancyGridMap2D& ground_truth,
                        const mrpt::maps::COccupancyGridMap2D& map, const Parameters& params,
                        TopologyGraph* gt_graph = nullptr, TopologyGraph* map_graph = nullptr);
 
+/** evaluate() with the ground truth's graph already built, `gt_graph` =
+ * buildTopologyGraph(ground_truth, params.graph): for scoring many maps against one ground truth
+ * (rank, series, rawlog snapshots) without building its graph again for each. The ground
+ * truth's grid is still needed by ICP similarity. timing_ms "graphs" is the map's graph only. */
+QualityReport evaluate(const TopologyGraph& gt_graph,
+                       const mrpt::maps::COccupancyGridMap2D& ground_truth,
+                       const mrpt::maps::COccupancyGridMap2D& map, const Parameters& params,
+                       TopologyGraph* map_graph = nullptr);
+
 }  // namespace mrpt_topoeval

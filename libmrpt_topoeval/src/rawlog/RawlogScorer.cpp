@@ -14,6 +14,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/slam/CMetricMapBuilderICP.h>
 #include <mrpt/system/datetime.h>
+#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/errors.h>
@@ -161,7 +162,13 @@ public:
     Run(const RawlogScorerOptions& opts, const Parameters& params,
         const mrpt::maps::COccupancyGridMap2D& gt, RawlogScoreResult& res,
         const RawlogScorer::SnapshotCallback& on_snapshot)
-        : m_opts(opts), m_params(params), m_gt(gt), m_res(res), m_on_snapshot(on_snapshot)
+        : m_opts(opts),
+          m_params(params),
+          m_gt(gt),
+          // Built once: every snapshot is scored against the same ground truth.
+          m_gt_graph(buildTopologyGraph(gt, params.graph)),
+          m_res(res),
+          m_on_snapshot(on_snapshot)
     {
     }
 
@@ -205,8 +212,8 @@ public:
             builder.getCurrentlyBuiltMetricMap()->mapByClass<mrpt::maps::COccupancyGridMap2D>();
         if (!grid_ptr) throw std::logic_error("the ICP-SLAM map has no occupancy grid");
         mrpt::maps::COccupancyGridMap2D grid = *grid_ptr;
-        TopologyGraph gt_graph, map_graph;
-        QualityReport report = evaluate(m_gt, grid, m_params, &gt_graph, &map_graph);
+        TopologyGraph map_graph;
+        QualityReport report = evaluate(m_gt_graph, m_gt, grid, m_params, &map_graph);
         ScoreRow row = scoreRowFromReport(report);
         row.step = static_cast<int>(m_res.rows.size()) + 1;
         row.entry = m_entry;
@@ -224,11 +231,11 @@ public:
         {
             const bool keep = m_opts.keep_snapshot_graphs;
             m_on_snapshot(
-                Snapshot{row, grid, report, keep ? gt_graph : kEmpty, keep ? map_graph : kEmpty});
+                Snapshot{row, grid, report, keep ? m_gt_graph : kEmpty, keep ? map_graph : kEmpty});
         }
         m_res.final_grid = std::move(grid);
         m_res.final_report = std::move(report);
-        m_res.final_gt_graph = std::move(gt_graph);
+        if (m_res.rows.size() == 1) m_res.final_gt_graph = m_gt_graph;  // the same for all
         m_res.final_map_graph = std::move(map_graph);
     }
 
@@ -338,6 +345,7 @@ private:
     const RawlogScorerOptions& m_opts;
     const Parameters& m_params;
     const mrpt::maps::COccupancyGridMap2D& m_gt;
+    const TopologyGraph m_gt_graph;
     RawlogScoreResult& m_res;
     const RawlogScorer::SnapshotCallback& m_on_snapshot;
 
