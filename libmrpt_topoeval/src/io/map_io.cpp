@@ -36,10 +36,12 @@
 #include <string_view>
 #include <vector>
 
+#include "internal/error_text.h"
 #include "internal/image_header.h"
 #include "internal/serialized_layout.h"
 
 namespace fs = std::filesystem;
+using mrpt_topoeval::internal::oneLine;
 
 namespace mrpt_topoeval
 {
@@ -72,35 +74,6 @@ bool endsWith(const std::string& s, const std::string& suffix)
 {
     return s.size() >= suffix.size() &&
            s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-/** MRPT exceptions carry a banner, the message, a source location and a backtrace over many
- * lines; our errors are one line, so keep only the message and join its lines. */
-std::string oneLine(const std::exception& e)
-{
-    std::string s = e.what();
-    // Stacked MRPT exceptions repeat the banner per level: the last message is the cause.
-    if (const auto m = s.rfind("Message:"); m != std::string::npos)
-    {
-        s = s.substr(m + 8);
-        for (const char* end_mark : {"\nLocation:", "\nCall stack"})
-            if (const auto k = s.find(end_mark); k != std::string::npos) s = s.substr(0, k);
-    }
-    std::string out;
-    bool space = false;
-    for (const char c : s)
-    {
-        if (std::isspace(static_cast<unsigned char>(c)))
-        {
-            space = !out.empty();
-            continue;
-        }
-        if (space) out += ' ';
-        space = false;
-        out += c;
-    }
-    if (out.size() > 300) out = out.substr(0, 297) + "...";
-    return out.empty() ? std::string("unknown error") : out;
 }
 
 /** Missing, directory, special, empty and unreadable files each get their own message before

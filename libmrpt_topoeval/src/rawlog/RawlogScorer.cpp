@@ -27,6 +27,7 @@
 #include <limits>
 #include <sstream>
 
+#include "internal/error_text.h"
 #include "rawlog/RawlogReader.h"
 
 namespace fs = std::filesystem;
@@ -93,9 +94,7 @@ SlamSetup configureSlam(mrpt::slam::CMetricMapBuilderICP& builder, const std::st
     }
     catch (const std::exception& e)
     {
-        std::string what = e.what();
-        if (const auto nl = what.find('\n'); nl != std::string::npos) what.resize(nl);
-        throw InputError(ini_name + ": invalid ICP-SLAM configuration: " + what);
+        throw InputError(ini_name + ": invalid ICP-SLAM configuration: " + internal::oneLine(e));
     }
     // Only the grid is scored: a configuration without one (the stock icp-slam demo INI) gets
     // the default grid so that it still works unchanged.
@@ -329,10 +328,8 @@ private:
             // One reading MRPT refuses does not end the run; it is counted and named once.
             if (m_slam_rejections++ == 0)
             {
-                std::string what = e.what();
-                if (const auto nl = what.find('\n'); nl != std::string::npos) what.resize(nl);
                 m_res.messages.push_back("ICP-SLAM rejected a reading at entry " +
-                                         std::to_string(m_entry) + " (" + what +
+                                         std::to_string(m_entry) + " (" + internal::oneLine(e) +
                                          "); such readings are skipped");
             }
         }
