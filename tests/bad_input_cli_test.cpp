@@ -214,6 +214,20 @@ TEST_F(BadInputCli, CutRawlogsExit2BeforeTheFirstEntryAnd4After)
 
 // A rawlog that fails the checks must leave nothing behind: not even the output folder, nor
 // the missing folders above it that `-o` would have created.
+// A name the file system refuses (longer than NAME_MAX) is bad input, not an internal error.
+TEST_F(BadInputCli, OverlongInputNamesAreBadInput)
+{
+    const std::string gt = shareDir() + "/rawlog/office_gt.yaml";
+    if (!fs::exists(gt)) GTEST_SKIP() << "no share/ rawlog sample";
+    const ScopedTempDir dir("bad_cli_long_name");
+    const std::string overlong = dir.path + "/" + std::string(300, 'x') + ".rawlog";
+    const std::string out = dir.path + "/out";
+    expectCleanFailure(run("rawlog " + q(overlong) + " -g " + q(gt) + " -o " + q(out)), 2,
+                       "no such file", out);
+    expectCleanFailure(run("series " + q(gt) + " " + q(overlong) + " -o " + q(out)), 2,
+                       "no such file", out);
+}
+
 TEST_F(BadInputCli, RawlogBadInputCreatesNoOutputFolder)
 {
     const std::string sample = shareDir() + "/rawlog/office_sim.rawlog.gz";

@@ -197,7 +197,8 @@ int verbRawlog(int argc, char** argv)
     // have passed their checks: bad input must not leave an empty DIR behind.
     checkOutputFolder(dir, kOutputNames, force,
                       {rawlog_path, gt_path, slam_arg.getValue(), std_opts.config()});
-    if (!fs::exists(rawlog_path)) throw InputError(rawlog_path + ": no such file");
+    std::error_code ec;  // the non-throwing overload: a bad name is bad input, not a crash
+    if (!fs::exists(rawlog_path, ec)) throw InputError(rawlog_path + ": no such file");
     const LoadedMap gt = loadMap(gt_path, params.map_load);
 
     RawlogScorerOptions opts;

@@ -55,18 +55,26 @@ bool isImage(const fs::path& p)
 /** A folder's maps sorted by name; an image with a YAML beside it is the YAML's. */
 std::vector<std::string> mapsInFolder(const std::string& dir)
 {
+    // The non-throwing overloads: an unreadable folder is bad input (exit 2), not an
+    // internal error.
+    std::error_code ec, entry_ec;  // listing errors; an entry that cannot be checked is skipped
+    fs::directory_iterator it(dir, ec);
+    if (ec) throw InputError(dir + ": cannot list the folder: " + ec.message());
     std::vector<std::string> out;
-    for (const auto& e : fs::directory_iterator(dir))
+    for (; it != fs::directory_iterator(); it.increment(ec))
     {
-        if (!e.is_regular_file() || !isMapFile(e.path())) continue;
-        if (isImage(e.path()))
+        if (ec) throw InputError(dir + ": cannot list the folder: " + ec.message());
+        if (!it->is_regular_file(entry_ec) || !isMapFile(it->path())) continue;
+        if (isImage(it->path()))
         {
-            fs::path y = e.path();
-            if (fs::exists(y.replace_extension(".yaml")) || fs::exists(y.replace_extension(".yml")))
+            fs::path y = it->path();
+            if (fs::exists(y.replace_extension(".yaml"), entry_ec) ||
+                fs::exists(y.replace_extension(".yml"), entry_ec))
                 continue;
         }
-        out.push_back(e.path().string());
+        out.push_back(it->path().string());
     }
+    if (ec) throw InputError(dir + ": cannot list the folder: " + ec.message());
     std::sort(out.begin(), out.end());
     return out;
 }
