@@ -144,6 +144,34 @@ void writeGridPng(const std::string& path, const mrpt::maps::COccupancyGridMap2D
     writePngAtomic(path, img, overwrite);
 }
 
+void keepPartialRun(OutputFolder& folder, ScoresCsv& csv, const std::string& noun,
+                    const std::function<std::string(const std::string& error)>& report_json,
+                    bool force)
+{
+    folder.keep();
+    const std::string error = currentErrorText();
+    std::string kept;
+    try
+    {
+        csv.commit();
+        kept = "scores.csv";
+    }
+    catch (const std::exception&)
+    {
+        kept = "scores.csv.part";
+    }
+    try
+    {
+        writeFileAtomic(folder.file("report.json"), report_json(error), force);
+        kept += ", report.json";
+    }
+    catch (const std::exception&)
+    {
+    }
+    printWarning(folder.dir() + ": kept the " + std::to_string(csv.rows()) + " " + noun +
+                 " scored before the error (" + kept + ")");
+}
+
 std::string jsonNumber(double v)
 {
     if (!std::isfinite(v)) return "null";

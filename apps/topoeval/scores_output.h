@@ -10,6 +10,7 @@
 #include <mrpt_topoeval/output.h>
 
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,8 @@ public:
 
     /** `dir/name`. */
     std::string file(const std::string& name) const;
+    /** The folder, as given. */
+    const std::string& dir() const { return m_dir; }
     /** Creates the folder `dir/name` if missing (removed like `dir` unless kept).
      * \throws OutputError */
     std::string createSubfolder(const std::string& name);
@@ -74,6 +77,15 @@ private:
     bool m_committed = false;
     std::size_t m_rows = 0;
 };
+
+/** Called while an error that ends a run propagates (inside a catch), once `csv` holds rows:
+ * they are results, so `folder` is kept, `scores.csv` committed (or its `.part` left), a
+ * `report.json` written from `report_json(error text)` (best effort: the error reported is the
+ * first one), and a warning names what was kept, e.g. "DIR: kept the 3 snapshots scored before
+ * the error (scores.csv, report.json)". The caller rethrows. */
+void keepPartialRun(OutputFolder& folder, ScoresCsv& csv, const std::string& noun,
+                    const std::function<std::string(const std::string& error)>& report_json,
+                    bool force);
 
 /** Writes an MRPT serialized grid, gz-compressed, through a temporary name.
  * \throws OutputError */

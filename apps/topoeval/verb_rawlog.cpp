@@ -269,45 +269,27 @@ int verbRawlog(int argc, char** argv)
     }
     catch (...)
     {
+        progress.endLine();
         // Nothing scored yet: rethrown, the folder is left as the run found it.
         if (csv.rows() == 0) throw;
-        // Snapshots were scored: they are results, kept with a report.json that says the run
-        // stopped on an error and which. What the scorer had not returned yet (its counters,
-        // the final report) is null. Best effort: the error reported is the first one.
-        folder.keep();
-        progress.endLine();
-        const std::string error = currentErrorText();
-        std::vector<std::string> kept;
-        try
-        {
-            csv.commit();
-            kept.push_back("scores.csv");
-        }
-        catch (const std::exception&)
-        {
-            kept.push_back("scores.csv.part");
-        }
-        try
-        {
-            std::ostringstream js;
-            js << "{\n  \"rawlog\": " << jsonQuote(rawlog_path)
-               << ",\n  \"ground_truth\": " << jsonQuote(gt_path) << ",\n  \"stop\": \"error\""
-               << ",\n  \"stop_entry\": null,\n  \"stop_message\": " << jsonQuote(error)
-               << ",\n  \"stats\": null,\n  \"snapshots\": " << csv.rows()
-               << ",\n  \"messages\": " << messages_json(probe.messages)
-               << ",\n  \"configuration\": " << configuration_json(probe.effective_slam_ini)
-               << ",\n  \"final_scores\": " << scoreRowJson(last_row)
-               << ",\n  \"final_report\": null,\n  \"timing_ms\": null\n}\n";
-            writeFileAtomic(out("report.json"), js.str(), force);
-            kept.push_back("report.json");
-        }
-        catch (const std::exception&)
-        {
-        }
-        std::string names;
-        for (const auto& k : kept) names += (names.empty() ? "" : ", ") + k;
-        printWarning(dir + ": kept the " + std::to_string(csv.rows()) +
-                     " snapshots scored before the error (" + names + ")");
+        // Snapshots were scored: they are results. What the scorer had not returned yet (its
+        // counters, the final report) is null in report.json.
+        keepPartialRun(
+            folder, csv, "snapshots",
+            [&](const std::string& error)
+            {
+                std::ostringstream js;
+                js << "{\n  \"rawlog\": " << jsonQuote(rawlog_path)
+                   << ",\n  \"ground_truth\": " << jsonQuote(gt_path) << ",\n  \"stop\": \"error\""
+                   << ",\n  \"stop_entry\": null,\n  \"stop_message\": " << jsonQuote(error)
+                   << ",\n  \"stats\": null,\n  \"snapshots\": " << csv.rows()
+                   << ",\n  \"messages\": " << messages_json(probe.messages)
+                   << ",\n  \"configuration\": " << configuration_json(probe.effective_slam_ini)
+                   << ",\n  \"final_scores\": " << scoreRowJson(last_row)
+                   << ",\n  \"final_report\": null,\n  \"timing_ms\": null\n}\n";
+                return js.str();
+            },
+            force);
         throw;
     }
     folder.keep();

@@ -197,30 +197,10 @@ int verbSeries(int argc, char** argv)
     catch (...)
     {
         if (rows.empty()) throw;  // nothing scored: the folder is left as the run found it
-        // Maps were scored: kept, with a report.json that says an error stopped the run and
-        // which. Best effort: the error reported is the first one.
-        folder.keep();
-        const std::string error = currentErrorText();
-        std::string kept;
-        try
-        {
-            csv.commit();
-            kept = "scores.csv";
-        }
-        catch (const std::exception&)
-        {
-            kept = "scores.csv.part";
-        }
-        try
-        {
-            writeFileAtomic(out("report.json"), reportJson(gt_path, files.str(), error), force);
-            kept += ", report.json";
-        }
-        catch (const std::exception&)
-        {
-        }
-        printWarning(dir + ": kept the " + std::to_string(rows.size()) +
-                     " maps scored before the error (" + kept + ")");
+        keepPartialRun(
+            folder, csv, "maps",
+            [&](const std::string& error) { return reportJson(gt_path, files.str(), error); },
+            force);
         throw;
     }
     folder.keep();
