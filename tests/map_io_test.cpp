@@ -43,7 +43,7 @@ using mrpt_topoeval::InputError;
 using mrpt_topoeval::LoadedMap;
 using mrpt_topoeval::loadMap;
 using mrpt_topoeval::MapLoadOptions;
-using mrpt_topoeval::testing::makeTempDir;
+using mrpt_topoeval::testing::ScopedTempDir;
 using mrpt_topoeval::testing::sharedDataFile;
 using mrpt_topoeval::testing::shareDir;
 using mrpt_topoeval::testing::testsDir;
@@ -181,7 +181,8 @@ void expectPixelClasses(const COccupancyGridMap2D& g, const std::map<int, Cls>& 
 
 TEST(MapIoYaml, PixelsLandInTheRightCellsWithOriginAndTopRowAtMaxY)
 {
-    const std::string dir = makeTempDir("mapio_yaml");
+    const ScopedTempDir tmp("mapio_yaml");
+    const std::string& dir = tmp.path;
     writePgm(dir + "/m.pgm", kW, kH, kPixels);
     writeYaml(dir + "/m.yaml", "m.pgm", 0.5, "[-1.0, 2.0, 0.0]");
 
@@ -211,7 +212,8 @@ TEST(MapIoYaml, PixelsLandInTheRightCellsWithOriginAndTopRowAtMaxY)
 
 TEST(MapIoYaml, ScaleModeKeepsProbabilitiesBetweenThresholds)
 {
-    const std::string dir = makeTempDir("mapio_scale");
+    const ScopedTempDir tmp("mapio_scale");
+    const std::string& dir = tmp.path;
     writePgm(dir + "/m.pgm", kW, kH, kPixels);
     writeYaml(dir + "/m.yaml", "m.pgm", 0.5, "[0, 0, 0]", "0", "mode: scale\n");
     const COccupancyGridMap2D g = loadMap(dir + "/m.yaml").grid;
@@ -225,7 +227,8 @@ TEST(MapIoYaml, ScaleModeKeepsProbabilitiesBetweenThresholds)
 
 TEST(MapIoYaml, NegateSwapsBlackAndWhite)
 {
-    const std::string dir = makeTempDir("mapio_negate");
+    const ScopedTempDir tmp("mapio_negate");
+    const std::string& dir = tmp.path;
     writePgm(dir + "/m.pgm", kW, kH, kPixels);
     for (const std::string negate : {"1", "true"})
     {
@@ -239,7 +242,8 @@ TEST(MapIoYaml, NegateSwapsBlackAndWhite)
 
 TEST(MapIoYaml, RawModeCopiesGreyAsOccupancy)
 {
-    const std::string dir = makeTempDir("mapio_raw");
+    const ScopedTempDir tmp("mapio_raw");
+    const std::string& dir = tmp.path;
     writePgm(dir + "/m.pgm", kW, kH, kPixels);
     writeYaml(dir + "/m.yaml", "m.pgm", 0.5, "[0, 0, 0]", "0", "mode: raw\n");
     const COccupancyGridMap2D g = loadMap(dir + "/m.yaml").grid;
@@ -252,7 +256,8 @@ TEST(MapIoYaml, RawModeCopiesGreyAsOccupancy)
 
 TEST(MapIoYaml, OriginOffTheCellGridKeepsExactSizeAndMovesLessThanHalfACell)
 {
-    const std::string dir = makeTempDir("mapio_snap");
+    const ScopedTempDir tmp("mapio_snap");
+    const std::string& dir = tmp.path;
     const int w = 7, h = 5;
     std::vector<int> px(w * h, 254);
     px[0] = 0;  // top-left pixel occupied
@@ -283,7 +288,8 @@ TEST(MapIoYaml, OriginOffTheCellGridKeepsExactSizeAndMovesLessThanHalfACell)
 
 TEST(MapIoYaml, AcceptsYamlSyntaxVariants)
 {
-    const std::string dir = makeTempDir("mapio_syntax");
+    const ScopedTempDir tmp("mapio_syntax");
+    const std::string& dir = tmp.path;
     writePgm(dir + "/my map.pgm", kW, kH, kPixels);
     // BOM, document marker, comments, CRLF line ends, a quoted file name with a space, a block
     // sequence for the origin, true/false for negate, upper-case mode, unknown keys ignored.
@@ -314,7 +320,8 @@ TEST(MapIoYaml, AcceptsYamlSyntaxVariants)
 
 TEST(MapIoYaml, YawIsRefusedUnlessNegligible)
 {
-    const std::string dir = makeTempDir("mapio_yaw");
+    const ScopedTempDir tmp("mapio_yaw");
+    const std::string& dir = tmp.path;
     writePgm(dir + "/m.pgm", kW, kH, kPixels);
     writeYaml(dir + "/m.yaml", "m.pgm", 0.5, "[0, 0, 1e-12]");
     EXPECT_NO_THROW(loadMap(dir + "/m.yaml"));
@@ -325,7 +332,8 @@ TEST(MapIoYaml, YawIsRefusedUnlessNegligible)
 
 TEST(MapIoYaml, MessagesNameFileKeyAndValue)
 {
-    const std::string dir = makeTempDir("mapio_msg");
+    const ScopedTempDir tmp("mapio_msg");
+    const std::string& dir = tmp.path;
     writePgm(dir + "/m.pgm", kW, kH, kPixels);
     writeYaml(dir + "/map.yaml", "m.pgm", -1, "[0, 0, 0]");
     EXPECT_EQ(
@@ -337,7 +345,8 @@ TEST(MapIoYaml, MessagesNameFileKeyAndValue)
 
 TEST(MapIoImage, PlainPngUsesDefaultResolutionAndLowerLeftOrigin)
 {
-    const std::string dir = makeTempDir("mapio_png");
+    const ScopedTempDir tmp("mapio_png");
+    const std::string& dir = tmp.path;
     mrpt::img::CImage img(5, 4, mrpt::img::CH_GRAY);
     img.filledRectangle(0, 0, 4, 3, mrpt::img::TColor(254, 254, 254));
     img.setPixel(0, 0, 0);    // top-left: occupied
@@ -370,7 +379,8 @@ TEST(MapIoImage, PlainPngUsesDefaultResolutionAndLowerLeftOrigin)
 
 TEST(MapIoImage, ThresholdOptionsApplyToPlainImages)
 {
-    const std::string dir = makeTempDir("mapio_thresh");
+    const ScopedTempDir tmp("mapio_thresh");
+    const std::string& dir = tmp.path;
     writePgm(dir + "/m.pgm", kW, kH, kPixels);
     MapLoadOptions opts;
     opts.occupied_thresh = 0.5;  // grey 100 (p_occ 0.608) becomes occupied
@@ -392,7 +402,8 @@ TEST(MapIoImage, ThresholdOptionsApplyToPlainImages)
 
 TEST(MapIoImage, ColourImagesAverageTheirChannels)
 {
-    const std::string dir = makeTempDir("mapio_colour");
+    const ScopedTempDir tmp("mapio_colour");
+    const std::string& dir = tmp.path;
     mrpt::img::CImage img(3, 1, mrpt::img::CH_RGB);
     img.setPixel(0, 0, 0xFFFF00);  // yellow: mean 170 -> p_occ 0.333 -> unknown
     img.setPixel(1, 0, 0xFF0000);  // red: mean 85 -> p_occ 0.667 -> occupied
@@ -408,7 +419,8 @@ TEST(MapIoImage, ColourImagesAverageTheirChannels)
 
 TEST(MapIoImage, NetpbmSamplesAreScaledByTheirMaxval)
 {
-    const std::string dir = makeTempDir("mapio_maxval");
+    const ScopedTempDir tmp("mapio_maxval");
+    const std::string& dir = tmp.path;
     // 16-bit: 0 black, 65535 white, 205 * 257 the ROS unknown grey.
     writePgm(dir + "/w16.pgm", 3, 1, {0, 65535, 205 * 257}, 65535);
     COccupancyGridMap2D g = loadMap(dir + "/w16.pgm").grid;
@@ -431,7 +443,8 @@ TEST(MapIoImage, NetpbmSamplesAreScaledByTheirMaxval)
 
 TEST(MapIoImage, BmpAndJpegLoad)
 {
-    const std::string dir = makeTempDir("mapio_bmpjpg");
+    const ScopedTempDir tmp("mapio_bmpjpg");
+    const std::string& dir = tmp.path;
     // Left half black, right half white; JPEG blurs the edge, so test away from it.
     mrpt::img::CImage img(16, 8, mrpt::img::CH_GRAY);
     img.filledRectangle(0, 0, 15, 7, mrpt::img::TColor(255, 255, 255));
@@ -452,7 +465,8 @@ TEST(MapIoImage, BmpAndJpegLoad)
 
 TEST(MapIoGridmap, RoundTripGzAndPlain)
 {
-    const std::string dir = makeTempDir("mapio_gridmap");
+    const ScopedTempDir tmp("mapio_gridmap");
+    const std::string& dir = tmp.path;
     COccupancyGridMap2D grid;
     grid.setSize(-2.3f, 4.1f, 1.0f, 3.0f, 0.1f, 0.5f);
     for (int i = 0; i < 20; ++i)
@@ -510,7 +524,8 @@ mrpt::maps::CSimpleMap oneScanMap(const mrpt::poses::CPose3D& pose, float range,
 
 TEST(MapIoSimplemap, RendersScansWhereTheyHit)
 {
-    const std::string dir = makeTempDir("mapio_simplemap");
+    const ScopedTempDir tmp("mapio_simplemap");
+    const std::string& dir = tmp.path;
     // Robot at (1, 2) facing +x: the scan's arc of radius 3 m spans angles -90..+90 degrees.
     const mrpt::maps::CSimpleMap sm = oneScanMap(mrpt::poses::CPose3D(1, 2, 0, 0, 0, 0), 3.0f);
     {
@@ -560,7 +575,8 @@ TEST(MapIoSimplemap, RendersScansWhereTheyHit)
 
 TEST(MapIoErrors, FileProblemsGetClearMessages)
 {
-    const std::string dir = makeTempDir("mapio_errors");
+    const ScopedTempDir tmp("mapio_errors");
+    const std::string& dir = tmp.path;
     EXPECT_NE(expectInputError([&] { loadMap(dir + "/nothing.yaml"); }, dir + "/nothing.yaml")
                   .find("no such file"),
               std::string::npos);
@@ -1227,7 +1243,8 @@ TEST(SerializedLayout, RealRawlogsAndMapsPassWhole)
 
 TEST(MapIoGridmap, LengthFieldsAreCheckedBeforeMrptAllocates)
 {
-    const std::string dir = makeTempDir("mapio_layout");
+    const ScopedTempDir tmp("mapio_layout");
+    const std::string& dir = tmp.path;
     const auto write = [&](const std::string& name, const layout::Bytes& b)
     {
         std::ofstream(dir + "/" + name, std::ios::binary)

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_runner.h"
 #include "test_paths.h"
 
 namespace fs = std::filesystem;
@@ -20,35 +21,15 @@ using mrpt_topoeval::Parameters;
 
 namespace
 {
-/** A fresh temporary folder, removed with everything in it when the test is done. */
-struct ScopedTempDir
-{
-    explicit ScopedTempDir(const std::string& tag) : path(mrpt_topoeval::testing::makeTempDir(tag))
-    {
-    }
-    ~ScopedTempDir()
-    {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    ScopedTempDir(const ScopedTempDir&) = delete;
-    ScopedTempDir& operator=(const ScopedTempDir&) = delete;
-    const std::string path;
-};
+using mrpt_topoeval::testing::contains;
+using mrpt_topoeval::testing::readText;
+using mrpt_topoeval::testing::ScopedTempDir;
 
 std::string writeText(const std::string& dir, const std::string& name, const std::string& text)
 {
     const std::string path = (fs::path(dir) / name).string();
     std::ofstream(path, std::ios::binary) << text;
     return path;
-}
-
-std::string readText(const std::string& path)
-{
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
 }
 
 /** The InputError message fromIniFile() gives for `text`, or "" if it loads. */
@@ -70,11 +51,6 @@ std::string iniError(const std::string& text)
         return msg;
     }
     return "";
-}
-
-bool contains(const std::string& s, const std::string& part)
-{
-    return s.find(part) != std::string::npos;
 }
 }  // namespace
 

@@ -29,15 +29,10 @@ using namespace mrpt_topoeval::testing;
 
 namespace
 {
-struct TempDir
+/** A temporary folder for one test, removed at scope exit. */
+struct TempDir : ScopedTempDir
 {
-    TempDir() : path(makeTempDir("rawlog")) {}
-    ~TempDir()
-    {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    std::string path;
+    TempDir() : ScopedTempDir("rawlog") {}
 };
 
 /** The office map and a path through all of it; shared by the tests (simulated once). */

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "cli_runner.h"
+
 using mrpt_topoeval::GraphMatch;
 using mrpt_topoeval::MatchStage;
 using mrpt_topoeval::Parameters;
@@ -203,10 +205,7 @@ std::string topLevelObject(const std::string& json, const std::string& key)
     return close == std::string::npos ? std::string() : json.substr(open, close + 4 - open);
 }
 
-bool contains(const std::string& s, const std::string& part)
-{
-    return s.find(part) != std::string::npos;
-}
+using mrpt_topoeval::testing::contains;
 }  // namespace
 
 TEST(ReportJson, ExactTextOfATinyReport)

@@ -9,13 +9,15 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
 namespace mrpt_topoeval::fuzz
 {
 /** A scratch folder of this process, made once: libFuzzer runs one input after another in one
- * process, so files are simply overwritten (and -fork/-jobs workers get their own folder). */
+ * process, so files are simply overwritten (and -fork/-jobs workers get their own folder). It
+ * is removed at a normal exit; a crash keeps it, with the input that crashed. */
 inline const std::string& scratchDir()
 {
     static const std::string dir = []
@@ -25,6 +27,18 @@ inline const std::string& scratchDir()
         if (!mkdtemp(tmpl.data())) std::abort();
         return tmpl;
     }();
+    static const bool cleanup = []
+    {
+        // Function-local statics are destroyed after atexit handlers registered later run, so
+        // `dir` is still alive here.
+        return std::atexit(
+                   []
+                   {
+                       std::error_code ec;
+                       std::filesystem::remove_all(dir, ec);
+                   }) == 0;
+    }();
+    (void)cleanup;
     return dir;
 }
 

@@ -15,14 +15,6 @@ namespace fs = std::filesystem;
 
 namespace mrpt_topoeval::testing
 {
-ScopedTempDir::ScopedTempDir(const std::string& tag) : path(makeTempDir(tag)) {}
-
-ScopedTempDir::~ScopedTempDir()
-{
-    std::error_code ec;
-    fs::remove_all(path, ec);
-}
-
 std::string readText(const std::string& path)
 {
     std::ifstream f(path, std::ios::binary);

@@ -6,18 +6,10 @@
 
 #include <string>
 
+#include "test_paths.h"  // ScopedTempDir
+
 namespace mrpt_topoeval::testing
 {
-/** A fresh temporary folder (makeTempDir), removed with everything in it at scope exit. */
-struct ScopedTempDir
-{
-    explicit ScopedTempDir(const std::string& tag);
-    ~ScopedTempDir();
-    ScopedTempDir(const ScopedTempDir&) = delete;
-    ScopedTempDir& operator=(const ScopedTempDir&) = delete;
-    const std::string path;
-};
-
 /** The whole file as bytes ("" if it cannot be read). */
 std::string readText(const std::string& path);
 /** Writes `text` as the whole file. */

@@ -23,6 +23,8 @@ std::string shareDir() { return TOPOEVAL_SHARE_DIR; }
 std::string testsDir() { return TOPOEVAL_TESTS_DIR; }
 std::string topoevalBin() { return TOPOEVAL_BIN; }
 
+namespace
+{
 std::string makeTempDir(const std::string& tag)
 {
     static std::atomic<int> counter{0};
@@ -32,6 +34,15 @@ std::string makeTempDir(const std::string& tag)
     fs::remove_all(p);
     fs::create_directories(p);
     return p.string();
+}
+}  // namespace
+
+ScopedTempDir::ScopedTempDir(const std::string& tag) : path(makeTempDir(tag)) {}
+
+ScopedTempDir::~ScopedTempDir()
+{
+    std::error_code ec;
+    fs::remove_all(path, ec);
 }
 
 }  // namespace mrpt_topoeval::testing

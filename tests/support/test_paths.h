@@ -14,7 +14,15 @@ std::string shareDir();
 std::string testsDir();
 /** The built `topoeval` executable, empty if apps are not built. */
 std::string topoevalBin();
-/** A fresh empty temporary folder for one test. */
-std::string makeTempDir(const std::string& tag);
+/** A fresh empty temporary folder for one test (topoeval_test_TAG_PID_N in the system's temp
+ * folder), removed with everything in it at scope exit. */
+struct ScopedTempDir
+{
+    explicit ScopedTempDir(const std::string& tag);
+    ~ScopedTempDir();
+    ScopedTempDir(const ScopedTempDir&) = delete;
+    ScopedTempDir& operator=(const ScopedTempDir&) = delete;
+    const std::string path;
+};
 
 }  // namespace mrpt_topoeval::testing
