@@ -65,12 +65,6 @@ std::size_t GraphEditor::numAliveVertices() const
         std::count_if(m_v.begin(), m_v.end(), [](const Vertex& v) { return v.alive; }));
 }
 
-std::size_t GraphEditor::numAliveEdges() const
-{
-    return static_cast<std::size_t>(
-        std::count_if(m_e.begin(), m_e.end(), [](const Edge& e) { return e.alive; }));
-}
-
 double GraphEditor::pathLength(const std::vector<Eigen::Vector2d>& path)
 {
     double len = 0.0;

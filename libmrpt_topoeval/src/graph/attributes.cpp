@@ -6,11 +6,12 @@
 #include <numeric>
 #include <tuple>
 
+#include "internal/ring.h"
+
 namespace mrpt_topoeval::internal
 {
 namespace
 {
-constexpr double kTwoPi = 2.0 * M_PI;
 
 double signedArea(const std::vector<Eigen::Vector2d>& path)
 {
@@ -143,15 +144,8 @@ void attributeGraph(const GraphEditor& g, const CellToWorld& to_world,
                       return std::make_tuple(a.angle_rad, a.edge, !a.at_from) <
                              std::make_tuple(b.angle_rad, b.edge, !b.at_from);
                   });
-        const std::size_t n = v.ring.size();
-        v.angle_diffs_rad.resize(n);
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            double d = v.ring[(i + 1) % n].angle_rad - v.ring[i].angle_rad;
-            if (i + 1 == n) d += kTwoPi;
-            v.angle_diffs_rad[i] = d;
-        }
-        if (n > 0)
+        v.angle_diffs_rad = ringGaps(v.ring);
+        if (!v.ring.empty())
         {
             v.min_angle_rad = *std::min_element(v.angle_diffs_rad.begin(), v.angle_diffs_rad.end());
             v.max_angle_rad = *std::max_element(v.angle_diffs_rad.begin(), v.angle_diffs_rad.end());

@@ -38,7 +38,6 @@ public:
     const std::vector<Vertex>& vertices() const { return m_v; }
     const std::vector<Edge>& edges() const { return m_e; }
     std::size_t numAliveVertices() const;
-    std::size_t numAliveEdges() const;
 
     /** Replaces every chain through degree-2 vertices by one edge with the joined path (paper
      * II-B: only vertices of degree 1 or > 2 become graph vertices). A cycle with no other

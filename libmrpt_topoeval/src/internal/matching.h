@@ -31,7 +31,6 @@ int minIsomorphismSize(const GraphMatcherParameters& params, int n_gt, int n_map
 struct Isomorphism
 {
     std::vector<std::pair<int, int>> pairs;  //!< (gt vertex, map vertex)
-    double similarity_sum = 0.0;
 };
 
 /** Paper III-B, Algorithm 1: from every unassigned gt vertex (most similar first), tries every

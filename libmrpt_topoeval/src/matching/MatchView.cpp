@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "internal/ring.h"
+
 namespace mrpt_topoeval::internal
 {
 int MatchView::numActive() const
@@ -42,7 +44,7 @@ MatchView makeMatchView(const TopologyGraph& g)
             // and length-weighted clearance. The view edge's id is the smaller of the real
             // edge ids at its two ends, so both ends name it alike.
             double len = 0.0, clr = 0.0;
-            int from = i, e = inc.edge, at_other = inc.other_vertex;
+            int e = inc.edge, at_other = inc.other_vertex;
             const int first = inc.edge;
             int last = inc.edge;
             for (int guard = 0; guard <= nv; ++guard)
@@ -54,22 +56,13 @@ MatchView makeMatchView(const TopologyGraph& g)
                 if (!passThrough(at_other) || at_other == i) break;
                 const auto& two = kept[at_other];
                 const Incidence& next = two[0].edge == e ? two[1] : two[0];
-                from = at_other;
                 e = next.edge;
                 at_other = next.other_vertex;
             }
-            (void)from;
             vv.ring.push_back(
                 {std::min(first, last), at_other, len, len > 0.0 ? clr / len : 0.0, inc.angle_rad});
         }
-        const std::size_t n = vv.ring.size();
-        vv.gaps_rad.resize(n);
-        for (std::size_t k = 0; k < n; ++k)
-        {
-            double d = vv.ring[(k + 1) % n].angle_rad - vv.ring[k].angle_rad;
-            if (k + 1 == n) d += 2.0 * M_PI;
-            vv.gaps_rad[k] = d;
-        }
+        vv.gaps_rad = ringGaps(vv.ring);
     }
     return view;
 }

@@ -234,7 +234,6 @@ std::vector<Isomorphism> findIsomorphisms(MatchContext& ctx)
         if (!have_best || static_cast<int>(best.pairs.size()) < min_size) continue;
         Isomorphism iso;
         iso.pairs = best.pairs;
-        iso.similarity_sum = best.similarity_sum;
         for (const auto& [x, y] : iso.pairs)
         {
             ctx.gt_to_map[x] = y;

@@ -45,7 +45,6 @@ public:
     /** Share of the file consumed, or -1 when unknown (gz: only the uncompressed position is
      * known). */
     double fractionRead() const;
-    bool gzipped() const { return m_gzipped; }
 
 private:
     /** True if no byte is left (after a failed read). */
