@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -83,5 +84,9 @@ private:
     std::vector<Level> m_stack;
     bool m_done = false;  // the top-level value is complete
 };
+
+/** Writes the member "timing_ms": {step: milliseconds} (3 decimals). Every writer puts it last,
+ * so that a comparison of two runs can cut it off: it is the only part that varies. */
+void writeTiming(JsonWriter& w, const std::map<std::string, double>& timing_ms);
 
 }  // namespace mrpt_topoeval::internal

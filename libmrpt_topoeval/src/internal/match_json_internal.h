@@ -16,9 +16,14 @@ namespace mrpt_topoeval::internal
 /** Decimals of similarities in [0, 1] (finer than any threshold a user would set). */
 constexpr int kSimilarityDecimals = 4;
 
+/** Decimals of distances in metres: 0.1 mm, as the graph's JSON. */
+constexpr int kMetreDecimals = 4;
+
 /** Writes the object `{"file", "vertices", "non_spurious_vertices", "half_edges"}` describing
- * one side of a match, as the value of the member whose key the caller has written. */
-void writeMatchedGraph(JsonWriter& w, const TopologyGraph& g);
+ * one side of a match, as the value of the member whose key the caller has written; with
+ * `matchable` (the quality report's), also "matchable_vertices" and "edge_length_m". */
+void writeMatchedGraph(JsonWriter& w, const TopologyGraph& g,
+                       const std::size_t* matchable = nullptr);
 
 /** Writes the "matches" object (counts, isomorphism sizes, pairs, messages; see
  * matchToJson()) as the value of the member whose key the caller has written. */

@@ -268,4 +268,12 @@ std::string JsonWriter::str() const
     return m_out + "\n";
 }
 
+void writeTiming(JsonWriter& w, const std::map<std::string, double>& timing_ms)
+{
+    constexpr int kMillisecondDecimals = 3;
+    w.key("timing_ms").beginObject();
+    for (const auto& [step, ms] : timing_ms) w.key(step).value(ms, kMillisecondDecimals);
+    w.endObject();
+}
+
 }  // namespace mrpt_topoeval::internal

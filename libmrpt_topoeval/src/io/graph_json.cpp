@@ -16,7 +16,6 @@ using internal::JsonWriter;
 // 0.1 mm for positions and lengths (far below any cell size), 0.001 deg for angles.
 constexpr int kMetreDecimals = 4;
 constexpr int kDegreeDecimals = 3;
-constexpr int kMillisecondDecimals = 3;
 
 constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 
@@ -112,10 +111,7 @@ void writeStats(JsonWriter& w, const GraphBuildStats& s)
     w.key("vertices_final").value(u(s.vertices_final));
     w.key("alpha_polygon_segments").value(u(s.alpha_polygon_segments));
     w.endObject();
-    // Last, so a comparison of two runs can cut it off (the only part that varies).
-    w.key("timing_ms").beginObject();
-    for (const auto& [step, ms] : s.timing_ms) w.key(step).value(ms, kMillisecondDecimals);
-    w.endObject();
+    internal::writeTiming(w, s.timing_ms);
 }
 }  // namespace
 

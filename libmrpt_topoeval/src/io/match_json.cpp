@@ -15,14 +15,17 @@ namespace
 std::uint64_t u64(std::size_t n) { return static_cast<std::uint64_t>(n); }
 }  // namespace
 
-void writeMatchedGraph(JsonWriter& w, const TopologyGraph& g)
+void writeMatchedGraph(JsonWriter& w, const TopologyGraph& g, const std::size_t* matchable)
 {
     w.beginObject();
     w.key("file").value(g.map.file);
     w.key("vertices").value(u64(g.vertices.size()));
     // "missing" counts non-spurious ground-truth vertices only: the total it is out of.
     w.key("non_spurious_vertices").value(u64(g.numNonSpuriousVertices()));
+    // Coverage is out of these (QualityReport::gt_vertices / map_vertices).
+    if (matchable) w.key("matchable_vertices").value(u64(*matchable));
     w.key("half_edges").value(u64(g.numHalfEdges()));
+    if (matchable) w.key("edge_length_m").value(g.totalEdgeLength(), kMetreDecimals);
     w.endObject();
 }
 
@@ -59,7 +62,6 @@ void writeMatches(JsonWriter& w, const GraphMatch& match)
 std::string matchToJson(const TopologyGraph& ground_truth, const TopologyGraph& map,
                         const GraphMatch& match, const std::map<std::string, double>* timing_ms)
 {
-    constexpr int kMillisecondDecimals = 3;
     internal::JsonWriter w;
     w.beginObject();
     w.key("ground_truth");
@@ -68,13 +70,7 @@ std::string matchToJson(const TopologyGraph& ground_truth, const TopologyGraph& 
     internal::writeMatchedGraph(w, map);
     w.key("matches");
     internal::writeMatches(w, match);
-    if (timing_ms)
-    {
-        // Last, so a comparison of two runs can cut it off (the only part that varies).
-        w.key("timing_ms").beginObject();
-        for (const auto& [step, ms] : *timing_ms) w.key(step).value(ms, kMillisecondDecimals);
-        w.endObject();
-    }
+    if (timing_ms) internal::writeTiming(w, *timing_ms);
     w.endObject();
     return w.str();
 }

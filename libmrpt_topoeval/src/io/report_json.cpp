@@ -25,12 +25,11 @@ using internal::JsonWriter;
 
 // Fixed precisions, so equal reports give equal bytes: 0.1 mm for distances (as the graph's
 // JSON), 1e-6 m^2 for squared errors (the threshold is tenths of m^2), 1e-4 for scores in
-// [0, 1] (as similarities), 0.001 deg and 0.001 ms.
-constexpr int kMetreDecimals = 4;
+// [0, 1] (as similarities), 0.001 deg (and 0.001 ms: internal::writeTiming).
+constexpr int kMetreDecimals = internal::kMetreDecimals;
 constexpr int kSquareMetreDecimals = 6;
 constexpr int kScoreDecimals = internal::kSimilarityDecimals;
 constexpr int kDegreeDecimals = 3;
-constexpr int kMillisecondDecimals = 3;
 
 std::uint64_t u64(std::size_t n) { return static_cast<std::uint64_t>(n); }
 
@@ -49,19 +48,6 @@ void valueIfDefined(JsonWriter& w, bool defined, double v, int decimals)
         w.value(v, decimals);
     else
         w.null();
-}
-
-void writeGraph(JsonWriter& w, const TopologyGraph& g, std::size_t matchable)
-{
-    w.beginObject();
-    w.key("file").value(g.map.file);
-    w.key("vertices").value(u64(g.vertices.size()));
-    w.key("non_spurious_vertices").value(u64(g.numNonSpuriousVertices()));
-    // Coverage is out of these (QualityReport::gt_vertices / map_vertices).
-    w.key("matchable_vertices").value(u64(matchable));
-    w.key("half_edges").value(u64(g.numHalfEdges()));
-    w.key("edge_length_m").value(g.totalEdgeLength(), kMetreDecimals);
-    w.endObject();
 }
 
 void writeAccuracy(JsonWriter& w, const Accuracy& a, bool with_transform)
@@ -267,9 +253,9 @@ std::string reportToJson(const TopologyGraph& ground_truth, const TopologyGraph&
     JsonWriter w;
     w.beginObject();
     w.key("ground_truth");
-    writeGraph(w, ground_truth, r.gt_vertices);
+    internal::writeMatchedGraph(w, ground_truth, &r.gt_vertices);
     w.key("map");
-    writeGraph(w, map, r.map_vertices);
+    internal::writeMatchedGraph(w, map, &r.map_vertices);
     // The same writer as `topoeval match --json`: the two formats cannot drift apart.
     w.key("matches");
     internal::writeMatches(w, r.match);
@@ -288,13 +274,7 @@ std::string reportToJson(const TopologyGraph& ground_truth, const TopologyGraph&
     w.endArray();
     w.key("parameters");
     writeParameters(w, effective);
-    if (with_timing)
-    {
-        // Last, so a comparison of two runs can cut it off (the only part that varies).
-        w.key("timing_ms").beginObject();
-        for (const auto& [step, ms] : r.timing_ms) w.key(step).value(ms, kMillisecondDecimals);
-        w.endObject();
-    }
+    if (with_timing) internal::writeTiming(w, r.timing_ms);
     w.endObject();
     return w.str();
 }
