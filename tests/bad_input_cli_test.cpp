@@ -33,7 +33,10 @@ using mrpt_topoeval::testing::lineCount;
 using mrpt_topoeval::testing::readText;
 using mrpt_topoeval::testing::RunResult;
 using mrpt_topoeval::testing::ScopedTempDir;
+using mrpt_topoeval::testing::topLevelObject;
+using mrpt_topoeval::testing::withoutTiming;
 using mrpt_topoeval::testing::writeText;
+using mrpt_topoeval::testing::writeUniformRosMap;
 
 namespace
 {
@@ -85,26 +88,11 @@ void expectCleanFailure(const RunResult& r, int code, const std::string& must_co
     EXPECT_TRUE(filesUnder(out_dir).empty()) << "an output was left for a failed run";
 }
 
-/** A PGM of `w` x `h` pixels of one grey level and its ROS YAML (trinary, ROS thresholds). */
-std::string writeUniformRosMap(const std::string& dir, const std::string& name, int w, int h,
-                               unsigned char grey)
-{
-    std::string pgm = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
-    pgm.append(static_cast<std::size_t>(w) * h, static_cast<char>(grey));
-    writeText(dir + "/" + name + ".pgm", pgm);
-    const std::string yaml = dir + "/" + name + ".yaml";
-    writeText(yaml, "image: " + name +
-                        ".pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
-                        "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
-    return yaml;
-}
-
 /** The JSON with the timing (last member) and the thread count (the effective configuration
  * records what was asked) removed: everything else must be byte-identical. */
 std::string comparable(const std::string& json)
 {
-    const auto at = json.find(",\n  \"timing_ms\": {");
-    std::string head = at == std::string::npos ? json : json.substr(0, at);
+    std::string head = withoutTiming(json);
     const std::string key = "\"threads\": ";
     for (auto k = head.find(key); k != std::string::npos; k = head.find(key, k + 1))
     {

@@ -28,7 +28,10 @@ using mrpt_topoeval::testing::lineCount;
 using mrpt_topoeval::testing::readText;
 using mrpt_topoeval::testing::RunResult;
 using mrpt_topoeval::testing::ScopedTempDir;
+using mrpt_topoeval::testing::topLevelObject;
+using mrpt_topoeval::testing::withoutTiming;
 using mrpt_topoeval::testing::writeText;
+using mrpt_topoeval::testing::writeUniformRosMap;
 
 namespace
 {
@@ -45,27 +48,6 @@ std::vector<std::string> listing(const std::string& dir)
     if (!fs::exists(dir)) return names;
     for (const auto& e : fs::recursive_directory_iterator(dir)) names.push_back(e.path().string());
     return names;
-}
-
-/** The JSON without its last member "timing_ms" (the only part allowed to differ). */
-std::string withoutTiming(const std::string& json)
-{
-    const auto at = json.find(",\n  \"timing_ms\": {");
-    return at == std::string::npos ? json : json.substr(0, at);
-}
-
-/** A ROS map (PGM + YAML) of `w` x `h` pixels of one grey level. */
-std::string writeUniformRosMap(const std::string& dir, const std::string& name, int w, int h,
-                               unsigned char grey)
-{
-    std::string pgm = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
-    pgm.append(static_cast<std::size_t>(w) * h, static_cast<char>(grey));
-    writeText(dir + "/" + name + ".pgm", pgm);
-    const std::string yaml = dir + "/" + name + ".yaml";
-    writeText(yaml, "image: " + name +
-                        ".pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
-                        "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
-    return yaml;
 }
 
 class Cli : public ::testing::Test
@@ -573,16 +555,6 @@ std::string writeBoxRosMap(const std::string& dir, const std::string& name, int 
                         ".pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
                         "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
     return yaml;
-}
-
-/** The text of the top-level member `key`'s object value, from `{` to `}`; "" if absent. */
-std::string topLevelObject(const std::string& json, const std::string& key)
-{
-    const auto at = json.find("\n  \"" + key + "\": {");
-    if (at == std::string::npos) return {};
-    const auto open = json.find('{', at);
-    const auto close = json.find("\n  }", open);
-    return close == std::string::npos ? std::string() : json.substr(open, close + 4 - open);
 }
 
 std::vector<std::string> splitOn(const std::string& s, char sep)

@@ -195,17 +195,8 @@ std::string head(const std::string& json)
     return at == std::string::npos ? json : json.substr(0, at + key.size());
 }
 
-/** The text of the top-level member `key`'s value (an object), from its `{` to its `}`. */
-std::string topLevelObject(const std::string& json, const std::string& key)
-{
-    const auto at = json.find("\n  \"" + key + "\": {");
-    if (at == std::string::npos) return {};
-    const auto open = json.find('{', at);
-    const auto close = json.find("\n  }", open);
-    return close == std::string::npos ? std::string() : json.substr(open, close + 4 - open);
-}
-
 using mrpt_topoeval::testing::contains;
+using mrpt_topoeval::testing::topLevelObject;
 }  // namespace
 
 TEST(ReportJson, ExactTextOfATinyReport)

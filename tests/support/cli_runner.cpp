@@ -40,6 +40,34 @@ bool contains(const std::string& s, const std::string& part)
     return s.find(part) != std::string::npos;
 }
 
+std::string writeUniformRosMap(const std::string& dir, const std::string& name, int w, int h,
+                               unsigned char grey)
+{
+    std::string pgm = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
+    pgm.append(static_cast<std::size_t>(w) * h, static_cast<char>(grey));
+    writeText(dir + "/" + name + ".pgm", pgm);
+    const std::string yaml = dir + "/" + name + ".yaml";
+    writeText(yaml, "image: " + name +
+                        ".pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+                        "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+    return yaml;
+}
+
+std::string withoutTiming(const std::string& json)
+{
+    const auto at = json.find(",\n  \"timing_ms\": {");
+    return at == std::string::npos ? json : json.substr(0, at);
+}
+
+std::string topLevelObject(const std::string& json, const std::string& key)
+{
+    const auto at = json.find("\n  \"" + key + "\": {");
+    if (at == std::string::npos) return {};
+    const auto open = json.find('{', at);
+    const auto close = json.find("\n  }", open);
+    return close == std::string::npos ? std::string() : json.substr(open, close + 4 - open);
+}
+
 int lineCount(const std::string& s)
 {
     int n = 0;

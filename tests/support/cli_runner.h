@@ -19,6 +19,17 @@ std::string shellQuote(const std::string& s);
 bool contains(const std::string& s, const std::string& part);
 int lineCount(const std::string& s);
 
+/** A ROS map (PGM + YAML, trinary, ROS thresholds, 0.05 m/px) of `w` x `h` pixels of one grey
+ * level in `dir`; returns the YAML's path. */
+std::string writeUniformRosMap(const std::string& dir, const std::string& name, int w, int h,
+                               unsigned char grey);
+
+/** The JSON text without its last member "timing_ms" (the only part allowed to differ). */
+std::string withoutTiming(const std::string& json);
+/** The text of the top-level member object `key` of a JSON document written by the library
+ * (two-space indent), "" if there is none. */
+std::string topLevelObject(const std::string& json, const std::string& key);
+
 struct RunResult
 {
     /** Exit code; 128 + N when ended by signal N (never one of ours); 124 when `timeout`
