@@ -1,0 +1,896 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#include "real_pairs.h"
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CRawlog.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPosePDF.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/slam/CICP.h>
+#include <mrpt_topoeval/map_io.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+// How each truth is established (none uses the matcher):
+// - known transforms and shared frames: a Rigid2D, or the identity;
+// - Gazebo: rigid fits to the estimated -> true robot positions near each map point;
+// - Halmstad: a fit to hand-labelled keypoints;
+// - Intel: the SLAM keyframes' estimated poses against their true poses, which come from the
+//   corrected log where the keyframe's scan is in it, else from odometry seeded ICP of the scan
+//   against the reference map.
+// Every truth is checked against the ground truth's walls (checkTruth) and the numbers are
+// written into Truth::source, so a reader of the corpus sees how good each truth is.
+
+namespace mrpt_topoeval::validation
+{
+namespace
+{
+namespace fs = std::filesystem;
+using mrpt::maps::COccupancyGridMap2D;
+using mrpt::poses::CPose2D;
+using Points = std::vector<Eigen::Vector2d>;
+
+/** Cells below this P(free) count as occupied (loaded maps are 0 / 0.5 / 1 but for `scale`). */
+constexpr float kOccupiedBelow = 0.4f;
+/** Distances of the truth check [m]; the first is Truth::wall_tolerance_m by default. */
+constexpr double kCheckTol015_m = 0.15, kCheckTol025_m = 0.25;
+/** Gazebo local truth: estimated poses whose estimated -> true positions are fitted per point. */
+constexpr int kLocalFitPoses = 6;
+
+std::string fmt(double v, int decimals)
+{
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(decimals);
+    s << v;
+    return s.str();
+}
+
+COccupancyGridMap2D loadGrid(const fs::path& file, double resolution_m = 0.05)
+{
+    MapLoadOptions opts;
+    opts.resolution_m = resolution_m;
+    return loadMap(file.string(), opts).grid;
+}
+
+bool occupied(const COccupancyGridMap2D& g, int cx, int cy)
+{
+    return cx >= 0 && cy >= 0 && cx < static_cast<int>(g.getSizeX()) &&
+           cy < static_cast<int>(g.getSizeY()) && g.getCell(cx, cy) < kOccupiedBelow;
+}
+
+/** Centres of the occupied cells [m]. */
+Points occupiedCells(const COccupancyGridMap2D& g)
+{
+    Points pts;
+    for (int cy = 0; cy < static_cast<int>(g.getSizeY()); ++cy)
+        for (int cx = 0; cx < static_cast<int>(g.getSizeX()); ++cx)
+            if (occupied(g, cx, cy)) pts.emplace_back(g.idx2x(cx), g.idx2y(cy));
+    return pts;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Truth check: distance of mapped map walls to the ground truth's walls.
+
+/** Exact squared Euclidean distance transform of one line (Felzenszwalb & Huttenlocher 2012). */
+void edt1d(const std::vector<double>& f, std::vector<double>& d, std::vector<int>& v,
+           std::vector<double>& z)
+{
+    const int n = static_cast<int>(f.size());
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    int k = 0;
+    v[0] = 0;
+    z[0] = -inf;
+    z[1] = inf;
+    for (int q = 1; q < n; ++q)
+    {
+        if (f[q] == inf) continue;
+        while (true)
+        {
+            if (f[v[k]] == inf)
+            {
+                v[k] = q;  // only infinite parabolas so far: replace
+                break;
+            }
+            const double s = ((f[q] + q * q) - (f[v[k]] + v[k] * v[k])) / (2.0 * (q - v[k]));
+            if (s <= z[k])
+            {
+                if (k == 0)
+                {
+                    v[0] = q;
+                    break;
+                }
+                --k;
+                continue;
+            }
+            ++k;
+            v[k] = q;
+            z[k] = s;
+            z[k + 1] = inf;
+            break;
+        }
+    }
+    k = 0;
+    for (int q = 0; q < n; ++q)
+    {
+        while (z[k + 1] < q) ++k;
+        d[q] = f[v[k]] == inf ? inf : (q - v[k]) * (q - v[k]) + f[v[k]];
+    }
+}
+
+/** Distance of any world point to the nearest occupied cell of a grid [m]. */
+class WallDistance
+{
+public:
+    explicit WallDistance(const COccupancyGridMap2D& g)
+        : m_x0(g.getXMin()),
+          m_y0(g.getYMin()),
+          m_res(g.getResolution()),
+          m_w(static_cast<int>(g.getSizeX())),
+          m_h(static_cast<int>(g.getSizeY())),
+          m_d2(static_cast<std::size_t>(m_w) * m_h)
+    {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        const int n = std::max(m_w, m_h);
+        std::vector<double> f(n), d(n), z(n + 1);
+        std::vector<int> v(n);
+        for (int cy = 0; cy < m_h; ++cy)
+            for (int cx = 0; cx < m_w; ++cx) m_d2[idx(cx, cy)] = occupied(g, cx, cy) ? 0.0 : inf;
+        f.resize(m_h), d.resize(m_h);
+        for (int cx = 0; cx < m_w; ++cx)
+        {
+            for (int cy = 0; cy < m_h; ++cy) f[cy] = m_d2[idx(cx, cy)];
+            edt1d(f, d, v, z);
+            for (int cy = 0; cy < m_h; ++cy) m_d2[idx(cx, cy)] = d[cy];
+        }
+        f.resize(m_w), d.resize(m_w);
+        for (int cy = 0; cy < m_h; ++cy)
+        {
+            for (int cx = 0; cx < m_w; ++cx) f[cx] = m_d2[idx(cx, cy)];
+            edt1d(f, d, v, z);
+            for (int cx = 0; cx < m_w; ++cx) m_d2[idx(cx, cy)] = d[cx];
+        }
+    }
+
+    /** Infinite outside the grid. */
+    double at(const Eigen::Vector2d& p) const
+    {
+        const int cx = static_cast<int>(std::floor((p.x() - m_x0) / m_res));
+        const int cy = static_cast<int>(std::floor((p.y() - m_y0) / m_res));
+        if (cx < 0 || cy < 0 || cx >= m_w || cy >= m_h)
+            return std::numeric_limits<double>::infinity();
+        return std::sqrt(m_d2[idx(cx, cy)]) * m_res;
+    }
+
+private:
+    std::size_t idx(int cx, int cy) const { return static_cast<std::size_t>(cy) * m_w + cx; }
+    double m_x0, m_y0, m_res;
+    int m_w, m_h;
+    std::vector<double> m_d2;  //!< Squared distance [cells^2].
+};
+
+/** Shares of the map's occupied cells (clutter left out) that the truth maps near a wall. */
+struct TruthCheck
+{
+    std::size_t cells = 0;  //!< Occupied, not clutter, with a mapping.
+    double within_tol = 0;  //!< Share within Truth::wall_tolerance_m.
+    double within_015 = 0;  //!< Share within 0.15 m.
+    double within_025 = 0;  //!< Share within 0.25 m.
+    std::string text() const
+    {
+        return fmt(100 * within_tol, 1) + " / " + fmt(100 * within_015, 1) + " / " +
+               fmt(100 * within_025, 1) + " % of " + std::to_string(cells) + " cells";
+    }
+};
+
+TruthCheck checkTruth(const WallDistance& gt_walls, const COccupancyGridMap2D& map,
+                      const Truth& truth)
+{
+    TruthCheck c;
+    std::size_t n_tol = 0, n_015 = 0, n_025 = 0;
+    for (const Eigen::Vector2d& p : occupiedCells(map))
+    {
+        if (truth.is_clutter && truth.is_clutter(p)) continue;
+        const std::optional<Eigen::Vector2d> q = truth.mapping(p);
+        if (!q) continue;
+        ++c.cells;
+        const double d = gt_walls.at(*q);
+        n_tol += d <= truth.wall_tolerance_m;
+        n_015 += d <= kCheckTol015_m;
+        n_025 += d <= kCheckTol025_m;
+    }
+    if (c.cells == 0) return c;
+    c.within_tol = static_cast<double>(n_tol) / c.cells;
+    c.within_015 = static_cast<double>(n_015) / c.cells;
+    c.within_025 = static_cast<double>(n_025) / c.cells;
+    return c;
+}
+
+TruthCheck checkTruth(const COccupancyGridMap2D& gt, const COccupancyGridMap2D& map,
+                      const Truth& truth)
+{
+    return checkTruth(WallDistance(gt), map, truth);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fits.
+
+/** Least-squares p_dst = s R p_src + t in 2D (Horn / Umeyama); s = 1 unless `with_scale`. */
+struct Fit2D
+{
+    Rigid2D rigid;  //!< Rotation and translation; with a scale, t already includes it.
+    double scale = 1.0;
+    double rmse_m = 0.0;
+    Eigen::Vector2d apply(const Eigen::Vector2d& p) const
+    {
+        const double c = std::cos(rigid.yaw_rad), s = std::sin(rigid.yaw_rad);
+        return scale * Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y()) + rigid.t_m;
+    }
+};
+
+Fit2D fitPoints(const Points& src, const Points& dst, bool with_scale)
+{
+    Fit2D fit;
+    const std::size_t n = std::min(src.size(), dst.size());
+    if (n < 2) return fit;
+    Eigen::Vector2d cs(0, 0), cd(0, 0);
+    for (std::size_t i = 0; i < n; ++i) cs += src[i], cd += dst[i];
+    cs /= n, cd /= n;
+    double sxx = 0, sxy = 0, ss = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const Eigen::Vector2d a = src[i] - cs, b = dst[i] - cd;
+        sxx += a.dot(b);
+        sxy += a.x() * b.y() - a.y() * b.x();
+        ss += a.squaredNorm();
+    }
+    fit.rigid.yaw_rad = std::atan2(sxy, sxx);
+    if (with_scale && ss > 0) fit.scale = std::hypot(sxx, sxy) / ss;
+    fit.rigid.t_m = Eigen::Vector2d::Zero();
+    fit.rigid.t_m = cd - fit.apply(cs);
+    double e2 = 0;
+    for (std::size_t i = 0; i < n; ++i) e2 += (fit.apply(src[i]) - dst[i]).squaredNorm();
+    fit.rmse_m = std::sqrt(e2 / n);
+    return fit;
+}
+
+TruthMapping identityMapping()
+{
+    return [](const Eigen::Vector2d& p) { return std::optional<Eigen::Vector2d>(p); };
+}
+
+TruthMapping rigidMapping(const Rigid2D& T_gt_map)
+{
+    return [T_gt_map](const Eigen::Vector2d& p)
+    { return std::optional<Eigen::Vector2d>(T_gt_map.apply(p)); };
+}
+
+/** Truth from matched positions: for a map point, the rigid fit of the `k` estimated positions
+ * nearest to it onto their true positions. A wing that the SLAM rotated maps back as a whole. */
+TruthMapping localPoseFitMapping(Points est, Points truth, int k)
+{
+    auto e = std::make_shared<const Points>(std::move(est));
+    auto t = std::make_shared<const Points>(std::move(truth));
+    return [e, t, k](const Eigen::Vector2d& p) -> std::optional<Eigen::Vector2d>
+    {
+        const std::size_t n = e->size();
+        std::vector<std::pair<double, std::size_t>> near(n);
+        for (std::size_t i = 0; i < n; ++i) near[i] = {((*e)[i] - p).squaredNorm(), i};
+        const std::size_t m = std::min<std::size_t>(n, static_cast<std::size_t>(k));
+        if (m < 2) return std::nullopt;
+        std::partial_sort(near.begin(), near.begin() + m, near.end());
+        Points a, b;
+        for (std::size_t i = 0; i < m; ++i)
+            a.push_back((*e)[near[i].second]), b.push_back((*t)[near[i].second]);
+        return fitPoints(a, b, false).rigid.apply(p);
+    };
+}
+
+/** Truth from keyframes: a map point is placed like the nearest estimated keyframe's scan,
+ * p_gt = true_k (+) (est_k (-) p). */
+TruthMapping keyframeMapping(std::vector<CPose2D> est, std::vector<CPose2D> truth)
+{
+    auto e = std::make_shared<const std::vector<CPose2D>>(std::move(est));
+    auto t = std::make_shared<const std::vector<CPose2D>>(std::move(truth));
+    return [e, t](const Eigen::Vector2d& p) -> std::optional<Eigen::Vector2d>
+    {
+        std::size_t best = 0;
+        double best_d2 = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < e->size(); ++i)
+        {
+            const double d2 = std::pow((*e)[i].x() - p.x(), 2) + std::pow((*e)[i].y() - p.y(), 2);
+            if (d2 < best_d2) best_d2 = d2, best = i;
+        }
+        if (e->empty()) return std::nullopt;
+        double lx = 0, ly = 0, gx = 0, gy = 0;
+        (*e)[best].inverseComposePoint(p.x(), p.y(), lx, ly);
+        (*t)[best].composePoint(lx, ly, gx, gy);
+        return Eigen::Vector2d(gx, gy);
+    };
+}
+
+// ---------------------------------------------------------------------------------------------
+// Small readers.
+
+/** Gazebo poses/<system>.csv: `slam_x;slam_y;gt_x;gt_y;error`, UTF-8 BOM, header row. */
+void readPoseCsv(const fs::path& file, Points& est, Points& truth)
+{
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error(file.string() + ": cannot open");
+    std::string line;
+    std::getline(in, line);  // header (with the BOM)
+    while (std::getline(in, line))
+    {
+        std::replace(line.begin(), line.end(), ';', ' ');
+        std::istringstream s(line);
+        double ex, ey, tx, ty;
+        if (s >> ex >> ey >> tx >> ty) est.emplace_back(ex, ey), truth.emplace_back(tx, ty);
+    }
+    if (est.size() < 3) throw std::runtime_error(file.string() + ": fewer than 3 poses");
+}
+
+/** The little JSON that annotations.json needs: objects, arrays, numbers, strings. */
+struct Json
+{
+    std::map<std::string, Json> object;
+    std::vector<Json> array;
+    double number = 0;
+    std::string text;
+};
+
+class JsonParser
+{
+public:
+    explicit JsonParser(std::string s) : m_s(std::move(s)) {}
+    Json parse()
+    {
+        Json j;
+        ws();
+        if (m_i >= m_s.size()) fail("unexpected end");
+        const char c = m_s[m_i];
+        if (c == '{')
+        {
+            ++m_i;
+            for (ws(); peek() != '}'; ws())
+            {
+                const std::string key = parse().text;
+                ws();
+                expect(':');
+                j.object[key] = parse();
+                ws();
+                if (peek() == ',') ++m_i;
+            }
+            ++m_i;
+        }
+        else if (c == '[')
+        {
+            ++m_i;
+            for (ws(); peek() != ']'; ws())
+            {
+                j.array.push_back(parse());
+                ws();
+                if (peek() == ',') ++m_i;
+            }
+            ++m_i;
+        }
+        else if (c == '"')
+        {
+            for (++m_i; peek() != '"'; ++m_i)
+            {
+                if (m_s[m_i] == '\\') ++m_i;
+                j.text += m_s[m_i];
+            }
+            ++m_i;
+        }
+        else
+        {
+            std::size_t used = 0;
+            try
+            {
+                j.number = std::stod(m_s.substr(m_i, 40), &used);
+            }
+            catch (const std::exception&)
+            {
+                fail("bad value");
+            }
+            m_i += used;
+        }
+        return j;
+    }
+
+private:
+    void ws()
+    {
+        while (m_i < m_s.size() && std::isspace(static_cast<unsigned char>(m_s[m_i]))) ++m_i;
+    }
+    char peek() const
+    {
+        if (m_i >= m_s.size()) throw std::runtime_error("annotations.json: unexpected end");
+        return m_s[m_i];
+    }
+    void expect(char c)
+    {
+        if (peek() != c) fail(std::string("expected '") + c + "'");
+        ++m_i;
+    }
+    [[noreturn]] void fail(const std::string& what) const
+    {
+        throw std::runtime_error("annotations.json: " + what + " at byte " + std::to_string(m_i));
+    }
+    std::string m_s;
+    std::size_t m_i = 0;
+};
+
+/** Halmstad keypoint (pixel x, y from the lower-left corner) in a loaded grid's world frame:
+ * loadMap puts the image's lower-left pixel corner at the grid's (x_min, y_min). */
+Eigen::Vector2d keypointToWorld(const Json& xy, const COccupancyGridMap2D& g)
+{
+    const double res = g.getResolution();
+    return {g.getXMin() + (xy.array.at(0).number + 0.5) * res,
+            g.getYMin() + (xy.array.at(1).number + 0.5) * res};
+}
+
+void note(std::vector<std::string>* skipped, const std::string& line)
+{
+    if (skipped) skipped->push_back(line);
+}
+
+/** Fills the pair's truth check numbers into its source text. */
+void appendCheck(RealPair& pair)
+{
+    const TruthCheck c = checkTruth(pair.gt, pair.map, pair.truth);
+    pair.truth.source += "; truth check " + c.text() + " within " +
+                         fmt(pair.truth.wall_tolerance_m, 2) + " / 0.15 / 0.25 m";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Families.
+
+void gh25Pair(const fs::path& data, std::vector<RealPair>& out)
+{
+    RealPair p;
+    p.name = "gh25_vs_icp_slam";
+    p.family = "gh25";
+    p.gt_file = (data / "rawlogs/gh25_gt_trinary_res0.05.yaml").string();
+    p.map_file = (data / "slam_maps/driving_in_office_icp-slam_app-final.yaml").string();
+    p.gt = loadGrid(p.gt_file);
+    p.map = loadGrid(p.map_file);
+    Rigid2D T_gt_map;
+    T_gt_map.yaw_rad = 0.97 * M_PI / 180.0;
+    T_gt_map.t_m = {20.03, 9.08};
+    p.truth.mapping = rigidMapping(T_gt_map);
+    p.truth.source = "known transform (data README: R(+0.97 deg), t = (20.03, 9.08) m)";
+    out.push_back(std::move(p));
+}
+
+void housePairs(const fs::path& data, std::vector<RealPair>& out)
+{
+    const fs::path gt = data / "house/house_gt_trinary_res0.05.yaml";
+    const fs::path clean = data / "house/map_6ccdcaa.yaml";
+    const fs::path old = data / "house/map_2333d24.yaml";
+    const std::vector<std::tuple<std::string, fs::path, fs::path, std::string>> pairs = {
+        {"house_gt_vs_6ccdcaa", gt, clean,
+         "same frame (data README): walls-only plan, furnished map"},
+        {"house_gt_vs_2333d24", gt, old, "same frame (data README): its left wing is rotated"},
+        {"house_6ccdcaa_vs_2333d24", clean, old,
+         "same frame (data README): 2020 map as ground truth of the 2019 map"}};
+    for (const auto& [name, g, m, source] : pairs)
+    {
+        RealPair p;
+        p.name = name;
+        p.family = "house";
+        p.gt_file = g.string();
+        p.map_file = m.string();
+        p.gt = loadGrid(g);
+        p.map = loadGrid(m);
+        p.truth.mapping = identityMapping();
+        p.truth.source = source;
+        out.push_back(std::move(p));
+    }
+}
+
+void gazeboPairs(const fs::path& data, std::vector<RealPair>& out)
+{
+    const fs::path dir = data / "gazebo_slam/office";
+    const fs::path gt_file = dir / "office_ground_truth.yaml";
+    const COccupancyGridMap2D gt = loadGrid(gt_file);
+    const WallDistance gt_walls(gt);
+    // map file stem, pose file stem
+    const std::vector<std::pair<std::string, std::string>> systems = {
+        {"cartographer", "cartographer"},
+        {"gmapping", "gmapping"},
+        {"slam_toolbox", "slam_toolbox"},
+        {"lidar_rtabmap", "lidar_rtab_map"},
+        {"rgbd_rtabmap", "rgb_d_rtab_map"}};
+    for (const auto& [stem, poses] : systems)
+    {
+        RealPair p;
+        p.name = "gazebo_" + stem;
+        p.family = "gazebo";
+        p.gt_file = gt_file.string();
+        p.map_file = (dir / (stem + "_map.yaml")).string();
+        p.gt = gt;
+        p.map = loadGrid(p.map_file);
+
+        Truth same;
+        same.mapping = identityMapping();
+        const TruthCheck c_same = checkTruth(gt_walls, p.map, same);
+
+        Points est, truth;
+        readPoseCsv(dir / "poses" / (poses + ".csv"), est, truth);
+        const std::size_t n_poses = est.size();
+        Truth local;
+        local.mapping = localPoseFitMapping(std::move(est), std::move(truth), kLocalFitPoses);
+        const TruthCheck c_local = checkTruth(gt_walls, p.map, local);
+
+        const bool use_local = c_local.within_tol > c_same.within_tol;
+        p.truth.mapping = use_local ? local.mapping : same.mapping;
+        p.truth.source = (use_local ? "local rigid fits to the " + std::to_string(kLocalFitPoses) +
+                                          " nearest of " + std::to_string(n_poses) +
+                                          " estimated -> true poses (poses/" + poses + ".csv)"
+                                    : std::string("same frame (data README)")) +
+                         "; truth check local fit " + c_local.text() + ", identity " +
+                         c_same.text() + " within 0.10 / 0.15 / 0.25 m";
+        out.push_back(std::move(p));
+    }
+}
+
+/** The five plain IPA plans: nominal 0.05 m/px, lab_intel measured at about 0.043. */
+std::vector<std::pair<std::string, double>> floorplanNames()
+{
+    return {{"Freiburg79_scan", 0.05},
+            {"lab_intel", 0.043},
+            {"lab_ipa", 0.05},
+            {"office_a", 0.05},
+            {"office_e", 0.05}};
+}
+
+void floorplanPairs(const fs::path& data, std::vector<RealPair>& out,
+                    std::vector<std::string>* skipped)
+{
+    for (const auto& [name, res] : floorplanNames())
+    {
+        const fs::path plain = data / "floorplans" / (name + ".png");
+        const fs::path furnished = data / "floorplans" / (name + "_furnitures.png");
+        if (!fs::exists(plain) || !fs::exists(furnished))
+        {
+            note(skipped, "floorplan " + name + ": plain or furnished image missing");
+            continue;
+        }
+        RealPair p;
+        p.name = "floorplan_" + name + "_furnished";
+        p.family = "floorplan";
+        p.gt_file = plain.string();
+        p.map_file = furnished.string();
+        p.gt = loadGrid(plain, res);
+        p.map = loadGrid(furnished, res);
+        p.truth.mapping = identityMapping();
+        p.truth.source = "same pixels (identity), " + fmt(res, 3) + " m/px";
+        // Furniture: occupied in the furnished plan, no plain wall within one cell.
+        const COccupancyGridMap2D& g = p.gt;
+        const COccupancyGridMap2D& m = p.map;
+        auto clutter = std::make_shared<std::vector<bool>>(m.getSizeX() * m.getSizeY(), false);
+        for (int cy = 0; cy < static_cast<int>(m.getSizeY()); ++cy)
+            for (int cx = 0; cx < static_cast<int>(m.getSizeX()); ++cx)
+            {
+                if (!occupied(m, cx, cy)) continue;
+                bool near_wall = false;
+                for (int dy = -1; dy <= 1 && !near_wall; ++dy)
+                    for (int dx = -1; dx <= 1 && !near_wall; ++dx)
+                        near_wall = occupied(g, cx + dx, cy + dy);
+                (*clutter)[static_cast<std::size_t>(cy) * m.getSizeX() + cx] = !near_wall;
+            }
+        const double x0 = m.getXMin(), y0 = m.getYMin();
+        const int w = static_cast<int>(m.getSizeX()), h = static_cast<int>(m.getSizeY());
+        p.truth.is_clutter = [clutter, x0, y0, res, w, h](const Eigen::Vector2d& q)
+        {
+            const int cx = static_cast<int>(std::floor((q.x() - x0) / res));
+            const int cy = static_cast<int>(std::floor((q.y() - y0) / res));
+            return cx >= 0 && cy >= 0 && cx < w && cy < h &&
+                   (*clutter)[static_cast<std::size_t>(cy) * w + cx];
+        };
+        out.push_back(std::move(p));
+    }
+}
+
+/** The Halmstad layout's file: its YAML (which carries the fitted resolution) if present. */
+fs::path halmstadLayout(const fs::path& data, const std::string& env)
+{
+    const fs::path dir = data / "halmstad_apartments" / env;
+    return fs::exists(dir / (env + "_layout.yaml")) ? dir / (env + "_layout.yaml")
+                                                    : dir / (env + "_layout.png");
+}
+
+void halmstadPairs(const fs::path& data, std::vector<RealPair>& out,
+                   std::vector<std::string>* skipped)
+{
+    const fs::path ann_file = data / "halmstad_apartments/annotations.json";
+    std::ifstream in(ann_file);
+    if (!in)
+    {
+        note(skipped, "halmstad: " + ann_file.string() + " missing");
+        return;
+    }
+    std::stringstream buf;
+    buf << in.rdbuf();
+    const Json ann = JsonParser(buf.str()).parse();
+    const auto& keypoints = ann.object.at("keypoints").object;
+    const auto& associations = ann.object.at("associations").object;
+
+    for (const std::string env : {"HIH", "KPT4A"})
+    {
+        const std::string layout = env + "_layout";
+        const fs::path gt_file = halmstadLayout(data, env);
+        const COccupancyGridMap2D gt = loadGrid(gt_file, 0.02);
+        for (int n = 1; n <= 4; ++n)
+        {
+            const std::string robot = env + "_0" + std::to_string(n);
+            const fs::path map_file = data / "halmstad_apartments" / env / (robot + ".yaml");
+            const auto assoc = associations.find(robot + "|" + layout);
+            if (!fs::exists(map_file) || assoc == associations.end() || !keypoints.count(robot) ||
+                !keypoints.count(layout))
+            {
+                note(skipped, "halmstad_" + robot + ": map or keypoints missing");
+                continue;
+            }
+            RealPair p;
+            p.name = "halmstad_" + robot;
+            p.family = "halmstad";
+            p.gt_file = gt_file.string();
+            p.map_file = map_file.string();
+            p.gt = gt;
+            p.map = loadGrid(map_file, 0.02);
+            Points src, dst;
+            for (const Json& ij : assoc->second.array)
+            {
+                const auto i = static_cast<std::size_t>(ij.array.at(0).number);
+                const auto j = static_cast<std::size_t>(ij.array.at(1).number);
+                src.push_back(keypointToWorld(keypoints.at(robot).array.at(i), p.map));
+                dst.push_back(keypointToWorld(keypoints.at(layout).array.at(j), p.gt));
+            }
+            const Fit2D rigid = fitPoints(src, dst, false);
+            const Fit2D similar = fitPoints(src, dst, true);
+            // A similarity only where the scale is clearly not 1 (the YAMLs were made so it is).
+            const bool use_scale = std::abs(similar.scale - 1.0) > 0.03;
+            const Fit2D fit = use_scale ? similar : rigid;
+            p.truth.mapping = [fit](const Eigen::Vector2d& q)
+            { return std::optional<Eigen::Vector2d>(fit.apply(q)); };
+            p.truth.source = std::to_string(src.size()) + " hand-labelled keypoints, fit rmse " +
+                             fmt(fit.rmse_m, 3) + " m (" + (use_scale ? "similarity" : "rigid") +
+                             "; similarity fit scale " + fmt(similar.scale, 4) + ", rmse " +
+                             fmt(similar.rmse_m, 3) + " m; yaw " +
+                             fmt(fit.rigid.yaw_rad * 180 / M_PI, 2) + " deg)";
+            out.push_back(std::move(p));
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Intel: per-keyframe truth.
+
+struct RawScan
+{
+    mrpt::obs::CObservation2DRangeScan::Ptr scan;
+    CPose2D odometry;  //!< Odometry (raw log) or corrected pose (corrected log) at the scan.
+};
+
+std::vector<RawScan> readScans(const fs::path& file)
+{
+    mrpt::obs::CRawlog log;
+    if (!log.loadFromRawLogFile(file.string()))
+        throw std::runtime_error(file.string() + ": cannot read rawlog");
+    std::vector<RawScan> scans;
+    CPose2D odo;
+    for (std::size_t i = 0; i < log.size(); ++i)
+    {
+        if (log.getType(i) != mrpt::obs::CRawlog::etObservation) continue;
+        const auto obs = log.getAsObservation(i);
+        if (const auto o = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs))
+            odo = o->odometry;
+        else if (const auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obs))
+            scans.push_back({s, odo});
+    }
+    return scans;
+}
+
+bool sameRanges(const mrpt::obs::CObservation2DRangeScan& a,
+                const mrpt::obs::CObservation2DRangeScan& b)
+{
+    if (a.getScanSize() != b.getScanSize()) return false;
+    for (std::size_t i = 0; i < a.getScanSize(); ++i)
+        if (std::abs(a.getScanRange(i) - b.getScanRange(i)) > 1e-3f) return false;
+    return true;
+}
+
+/** Index of the scan of `scans` with the same ranges as `s`, closest to `hint`; -1 if none. */
+int findScan(const std::vector<RawScan>& scans, const mrpt::obs::CObservation2DRangeScan& s,
+             int hint)
+{
+    int best = -1;
+    for (int i = 0; i < static_cast<int>(scans.size()); ++i)
+        if (sameRanges(*scans[i].scan, s) &&
+            (best < 0 || std::abs(i - hint) < std::abs(best - hint)))
+            best = i;
+    return best;
+}
+
+/** True poses of the keyframes of `simplemap` in the corrected log's frame, and how many came
+ * from the corrected log directly, from ICP, and were left at the seed. */
+struct KeyframeTruth
+{
+    std::vector<CPose2D> est, truth;
+    int exact = 0, icp = 0, seed_only = 0;
+};
+
+KeyframeTruth intelKeyframeTruth(const fs::path& data, const fs::path& simplemap_file,
+                                 const COccupancyGridMap2D& ref)
+{
+    // The SLAM keyframes' scans are scans of the raw log (same ranges); their timestamps are
+    // not those of the corrected log (its CARMEN times start at 1e9 s), and only some raw scans
+    // are in the corrected log. Anchors: raw scans found in the corrected log, whose true pose
+    // is the corrected one. A keyframe's seed is its nearest anchor moved by the raw odometry
+    // between them; ICP of its scan against the reference map refines it.
+    const std::vector<RawScan> raw = readScans(data / "rawlogs/intel_obs-format.rawlog");
+    const std::vector<RawScan> corrected = readScans(data / "rawlogs/intel-corrected.rawlog");
+    std::vector<std::pair<int, CPose2D>> anchors;  // raw index, true pose
+    for (const RawScan& c : corrected)
+    {
+        const int r = findScan(raw, *c.scan, anchors.empty() ? 0 : anchors.back().first);
+        if (r >= 0) anchors.emplace_back(r, c.odometry);
+    }
+    if (anchors.empty()) throw std::runtime_error("intel: no corrected scan found in the raw log");
+
+    mrpt::maps::CSimpleMap sm;
+    {
+        mrpt::io::CFileGZInputStream f(simplemap_file.string());
+        auto arch = mrpt::serialization::archiveFrom(f);
+        arch >> sm;
+    }
+    mrpt::slam::CICP icp;
+    icp.options.maxIterations = 100;
+    icp.options.thresholdDist = 0.3f;
+    icp.options.thresholdAng = static_cast<float>(10 * M_PI / 180);
+    icp.options.ALFA = 0.5f;
+    icp.options.smallestThresholdDist = 0.05f;
+
+    KeyframeTruth kt;
+    int hint = 0;
+    for (std::size_t k = 0; k < sm.size(); ++k)
+    {
+        const auto& [pdf, sf] = sm.get(k);
+        const auto scan = sf->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+        if (!scan) continue;
+        const int r = findScan(raw, *scan, hint);
+        if (r < 0) continue;
+        hint = r;
+        const auto a = std::min_element(anchors.begin(), anchors.end(),
+                                        [r](const auto& x, const auto& y)
+                                        { return std::abs(x.first - r) < std::abs(y.first - r); });
+        CPose2D truth = a->second + (raw[r].odometry - raw[a->first].odometry);
+        if (a->first == r)
+            ++kt.exact;
+        else
+        {
+            mrpt::maps::CSimplePointsMap pts;
+            pts.insertObservation(*scan);
+            mrpt::slam::CICP::TReturnInfo info;
+            const auto aligned = icp.Align(&ref, &pts, truth, info);
+            const CPose2D refined = aligned->getMeanVal();
+            const bool ok = info.goodness > 0.6 && (refined - truth).norm() < 1.0 &&
+                            std::abs((refined - truth).phi()) < 0.3;
+            if (ok)
+                truth = refined, ++kt.icp;
+            else
+                ++kt.seed_only;
+        }
+        kt.est.push_back(CPose2D(pdf->getMeanVal()));
+        kt.truth.push_back(truth);
+    }
+    return kt;
+}
+
+void intelPairs(const fs::path& data, std::vector<RealPair>& out, std::vector<std::string>* skipped)
+{
+    const fs::path ref_file = data / "radish/intel-corrected_ref.yaml";
+    const fs::path map_file = data / "slam_maps/intel_icp-slam_app-final.yaml";
+    const fs::path sm_file = data / "slam_maps/intel_icp-slam.simplemap";
+    RealPair p;
+    p.name = "intel_vs_icp_slam";
+    p.family = "radish";
+    p.gt_file = ref_file.string();
+    p.map_file = map_file.string();
+    p.gt = loadGrid(ref_file);
+    p.map = loadGrid(map_file);
+    KeyframeTruth kt = intelKeyframeTruth(data, sm_file, p.gt);
+    const std::size_t n = kt.est.size();
+    p.truth.mapping = keyframeMapping(std::move(kt.est), std::move(kt.truth));
+    p.truth.source =
+        "keyframe poses: " + std::to_string(n) + " SLAM keyframes (nearest one per point); true " +
+        "pose from the corrected log for " + std::to_string(kt.exact) + ", odometry-seeded ICP " +
+        "against the reference map for " + std::to_string(kt.icp) + ", seed only for " +
+        std::to_string(kt.seed_only) + " (timestamps of the two logs do not agree)";
+    out.push_back(std::move(p));
+    note(skipped,
+         "intel_corrected_icp_slam (slam_maps/intel-corrected_icp-slam_app-final): no keyframes "
+         "of that run are stored, so no per-keyframe truth; a sheared map has no single "
+         "transform");
+}
+}  // namespace
+
+std::vector<RealBuilding> loadRealBuildings(const std::string& data_dir,
+                                            std::vector<std::string>* skipped)
+{
+    std::vector<RealBuilding> out;
+    const fs::path data(data_dir);
+    if (!fs::is_directory(data)) return out;
+    const auto add = [&](const std::string& name, const std::string& family, const fs::path& file,
+                         double resolution_m)
+    {
+        try
+        {
+            out.push_back({name, family, file.string(), loadGrid(file, resolution_m)});
+        }
+        catch (const std::exception& e)
+        {
+            note(skipped, name + ": " + e.what());
+        }
+    };
+    for (const std::string radish : {"aces", "csail", "freiburg-079", "freiburg-101", "intel"})
+        add("radish_" + radish, "radish", data / "radish" / (radish + "-corrected_ref.yaml"), 0.05);
+    for (const auto& [name, res] : floorplanNames())
+        add("floorplan_" + name, "floorplan", data / "floorplans" / (name + ".png"), res);
+    add("gh25", "gh25", data / "rawlogs/gh25_gt_trinary_res0.05.yaml", 0.05);
+    add("house", "house", data / "house/house_gt_trinary_res0.05.yaml", 0.05);
+    add("gazebo_office", "gazebo", data / "gazebo_slam/office/office_ground_truth.yaml", 0.05);
+    for (const std::string env : {"HIH", "KPT4A"})
+        add("halmstad_" + env, "halmstad", halmstadLayout(data, env), 0.02);
+    return out;
+}
+
+std::vector<RealPair> loadRealPairs(const std::string& data_dir, std::vector<std::string>* skipped)
+{
+    std::vector<RealPair> out;
+    const fs::path data(data_dir);
+    if (!fs::is_directory(data)) return out;
+    // One family failing (a file missing or unreadable) leaves the others.
+    const auto family = [&](const std::string& what, const auto& load)
+    {
+        try
+        {
+            load();
+        }
+        catch (const std::exception& e)
+        {
+            note(skipped, what + ": " + e.what());
+        }
+    };
+    family("gh25", [&] { gh25Pair(data, out); });
+    family("house", [&] { housePairs(data, out); });
+    family("gazebo", [&] { gazeboPairs(data, out); });
+    family("floorplan", [&] { floorplanPairs(data, out, skipped); });
+    family("halmstad", [&] { halmstadPairs(data, out, skipped); });
+    family("intel", [&] { intelPairs(data, out, skipped); });
+    for (RealPair& p : out)
+        if (p.family != "gazebo") appendCheck(p);
+    note(skipped,
+         "office_tb3: the drawn plan and the SLAM map share no frame and no truth is "
+         "published (different resolutions); only a matcher could align them");
+    note(skipped,
+         "intel_rbpf-slam_broken (final and snapshots): a diverged RBPF run with no "
+         "stored poses, so no truth without the matcher");
+    return out;
+}
+}  // namespace mrpt_topoeval::validation

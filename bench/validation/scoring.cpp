@@ -1,0 +1,118 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#include "scoring.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <opencv2/imgproc.hpp>
+
+namespace mrpt_topoeval::validation
+{
+TruthCheck checkTruth(const mrpt::maps::COccupancyGridMap2D& gt,
+                      const mrpt::maps::COccupancyGridMap2D& map, const Truth& truth)
+{
+    TruthCheck check;
+    if (truth.different_building || !truth.mapping) return check;
+    const int gx = static_cast<int>(gt.getSizeX()), gy = static_cast<int>(gt.getSizeY());
+    cv::Mat walls(gy, gx, CV_8UC1);
+    for (int y = 0; y < gy; ++y)
+        for (int x = 0; x < gx; ++x)
+            walls.at<std::uint8_t>(y, x) = gt.getCell(x, y) < 0.35f ? 0 : 255;
+    cv::Mat dist;
+    cv::distanceTransform(walls, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    const double res = gt.getResolution();
+    const int mx = static_cast<int>(map.getSizeX()), my = static_cast<int>(map.getSizeY());
+    for (int y = 0; y < my; ++y)
+        for (int x = 0; x < mx; ++x)
+        {
+            if (!(map.getCell(x, y) < 0.35f)) continue;
+            const Eigen::Vector2d p(map.idx2x(x), map.idx2y(y));
+            if (truth.is_clutter && truth.is_clutter(p)) continue;
+            ++check.cells;
+            const auto q = truth.mapping(p);
+            if (!q)
+            {
+                ++check.unmapped;
+                continue;
+            }
+            const int cx = static_cast<int>(std::floor((q->x() - gt.getXMin()) / res));
+            const int cy = static_cast<int>(std::floor((q->y() - gt.getYMin()) / res));
+            if (cx < 0 || cy < 0 || cx >= gx || cy >= gy) continue;
+            // Distance between cell centres, less half a cell for the mapped point's offset.
+            if (dist.at<float>(cy, cx) * res <= truth.wall_tolerance_m + 1e-9) ++check.on_wall;
+        }
+    return check;
+}
+
+double CaseScore::pairTolerance(const TopoVertex& g) { return std::max(0.5, 0.5 * g.clearance_m); }
+
+CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const QualityReport& report,
+                    const Truth& truth)
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    CaseScore s;
+    s.gt_vertices = gt.numNonSpuriousVertices();
+    s.map_vertices = map.numNonSpuriousVertices();
+    // The truth position of every map vertex, once.
+    std::vector<std::optional<Eigen::Vector2d>> mapped(map.vertices.size());
+    if (!truth.different_building && truth.mapping)
+        for (const auto& v : map.vertices)
+            mapped[static_cast<std::size_t>(v.id)] = truth.mapping(v.position_m);
+    auto isTrue = [&](int g, int m)
+    {
+        const auto& q = mapped[static_cast<std::size_t>(m)];
+        const auto& gv = gt.vertices[static_cast<std::size_t>(g)];
+        return q && (*q - gv.position_m).norm() <= CaseScore::pairTolerance(gv);
+    };
+    for (const auto& g : gt.vertices)
+    {
+        if (g.spurious) continue;
+        for (const auto& m : map.vertices)
+            if (!m.spurious && isTrue(g.id, m.id))
+            {
+                ++s.gt_with_counterpart;
+                break;
+            }
+    }
+    for (const auto& p : report.match.pairs)
+    {
+        ++s.matched;
+        s.true_pairs += isTrue(p.ground_truth, p.map) ? 1 : 0;
+    }
+    s.precision = s.matched ? static_cast<double>(s.true_pairs) / s.matched : nan;
+    s.recall = s.gt_with_counterpart
+                   ? std::min(1.0, static_cast<double>(s.true_pairs) / s.gt_with_counterpart)
+                   : nan;
+    s.coverage = report.coverage;
+    s.quality = report.quality;
+    s.relative_rmse_m = report.relative_accuracy.rmse_m;
+    s.brokenness_found = report.brokenness.degree;
+    s.brokenness_injected = truth.injected_breaks;
+    s.max_group_rotation_error_deg = nan;
+    if (truth.part_of && !truth.part_yaw_deg.empty() && !report.brokenness.groups.empty())
+    {
+        double worst = 0.0;
+        for (const auto& group : report.brokenness.groups)
+        {
+            std::map<int, int> votes;
+            for (int g : group.gt_vertices)
+            {
+                const int m = report.match.mapVertexOf(g);
+                if (m < 0) continue;
+                ++votes[truth.part_of(map.vertices[static_cast<std::size_t>(m)].position_m)];
+            }
+            int part = -1, best = 0;
+            for (const auto& [k, n] : votes)
+                if (k >= 0 && n > best) part = k, best = n;
+            if (part < 0) continue;
+            const double err = std::remainder(
+                group.transform.yaw_deg - truth.part_yaw_deg[static_cast<std::size_t>(part)],
+                360.0);
+            worst = std::max(worst, std::abs(err));
+        }
+        s.max_group_rotation_error_deg = worst;
+    }
+    return s;
+}
+}  // namespace mrpt_topoeval::validation

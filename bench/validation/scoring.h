@@ -1,0 +1,53 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+// How one case of the validation corpus is scored against its truth (doc/validation.md,
+// "Measures"): the truth check, true pairs, precision, recall, brokenness.
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt_topoeval/QualityReport.h>
+#include <mrpt_topoeval/TopologyGraph.h>
+
+#include <string>
+#include <vector>
+
+#include "truth.h"
+
+namespace mrpt_topoeval::validation
+{
+/** The truth check: occupied map cells (clutter left out) mapped into the ground truth. */
+struct TruthCheck
+{
+    std::size_t cells = 0;     //!< Occupied map cells checked.
+    std::size_t on_wall = 0;   //!< ... that land within the tolerance of a ground-truth wall.
+    std::size_t unmapped = 0;  //!< ... for which the truth gives no point.
+    double share() const { return cells ? static_cast<double>(on_wall) / cells : 1.0; }
+};
+
+/** Checks `truth` on `map` against `gt` (distance to the nearest ground-truth obstacle cell). */
+TruthCheck checkTruth(const mrpt::maps::COccupancyGridMap2D& gt,
+                      const mrpt::maps::COccupancyGridMap2D& map, const Truth& truth);
+
+/** The figures of one case. Counts are of non-spurious vertices. */
+struct CaseScore
+{
+    std::size_t gt_vertices = 0, map_vertices = 0;
+    /** Ground-truth vertices that truly have a counterpart: a map vertex that the truth maps
+     * within the pair tolerance of it. */
+    std::size_t gt_with_counterpart = 0;
+    std::size_t matched = 0, true_pairs = 0;
+    double precision = 0.0;  //!< true / matched (NaN when nothing was matched).
+    double recall = 0.0;     //!< true / gt_with_counterpart (NaN when there is no counterpart).
+    int brokenness_found = 0;
+    int brokenness_injected = -1;
+    /** Largest |yaw error| of an accepted brokenness group against the part most of its
+     * vertices belong to [deg]; NaN when not a broken case or no group. */
+    double max_group_rotation_error_deg = 0.0;
+    double coverage = 0.0, quality = 0.0, relative_rmse_m = 0.0;
+    /** Pairs whose map vertex is more than this from its partner count as false [m]. */
+    static double pairTolerance(const TopoVertex& gt_vertex);
+};
+
+/** Scores a report of `gt_graph` vs `map_graph` against `truth`. */
+CaseScore scoreCase(const TopologyGraph& gt_graph, const TopologyGraph& map_graph,
+                    const QualityReport& report, const Truth& truth);
+}  // namespace mrpt_topoeval::validation

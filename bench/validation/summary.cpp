@@ -1,0 +1,292 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#include "summary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+namespace mrpt_topoeval::validation
+{
+namespace
+{
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+const std::vector<std::string>& kindOrder()
+{
+    static const std::vector<std::string> k = {"identical", "rigid",  "resample", "speckle",
+                                               "gaps",      "ragged", "crop",     "broken",
+                                               "furniture", "slam",   "different"};
+    return k;
+}
+
+std::string num(double v, int decimals = 3)
+{
+    if (!std::isfinite(v)) return "-";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+std::vector<double> ranks(const std::vector<double>& v)
+{
+    std::vector<std::size_t> idx(v.size());
+    std::iota(idx.begin(), idx.end(), 0);
+    std::stable_sort(idx.begin(), idx.end(), [&](auto a, auto b) { return v[a] < v[b]; });
+    std::vector<double> r(v.size());
+    for (std::size_t i = 0; i < idx.size();)
+    {
+        std::size_t j = i;
+        while (j + 1 < idx.size() && v[idx[j + 1]] == v[idx[i]]) ++j;
+        const double mean_rank = 0.5 * (static_cast<double>(i) + static_cast<double>(j)) + 1.0;
+        for (std::size_t k = i; k <= j; ++k) r[idx[k]] = mean_rank;
+        i = j + 1;
+    }
+    return r;
+}
+}  // namespace
+
+double Aggregate::precision() const
+{
+    return matched ? static_cast<double>(true_pairs) / matched : kNaN;
+}
+double Aggregate::recall() const
+{
+    return counterparts ? static_cast<double>(true_pairs) / counterparts : kNaN;
+}
+
+Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*>& cases)
+{
+    Aggregate a;
+    a.name = name;
+    std::size_t crops = 0;
+    for (const CaseResult* r : cases)
+    {
+        ++a.cases;
+        if (!r->error.empty())
+        {
+            ++a.errors;
+            continue;
+        }
+        if (!r->spec.kind.empty() && r->spec.kind != "different")
+            a.truth_min = std::min(a.truth_min, r->truth_check.share());
+        const CaseScore& s = r->score;
+        a.matched += s.matched;
+        a.true_pairs += s.true_pairs;
+        a.counterparts += std::max(s.gt_with_counterpart, s.true_pairs);
+        if (s.brokenness_injected >= 0 && r->spec.kind == "broken")
+        {
+            ++a.broken;
+            if (s.brokenness_found == s.brokenness_injected) ++a.broken_exact;
+            if (std::isfinite(s.max_group_rotation_error_deg))
+                a.max_rotation_error_deg =
+                    std::max(a.max_rotation_error_deg, s.max_group_rotation_error_deg);
+        }
+        a.mean_coverage += s.coverage;
+        a.max_coverage = std::max(a.max_coverage, s.coverage);
+        a.mean_quality += s.quality;
+        a.mean_time_ms += r->time_ms;
+        if (r->spec.kind == "crop" && s.gt_vertices)
+        {
+            ++crops;
+            a.mean_coverage_error +=
+                std::abs(s.coverage - static_cast<double>(s.gt_with_counterpart) / s.gt_vertices);
+        }
+    }
+    const std::size_t ok = a.cases - a.errors;
+    if (ok)
+    {
+        a.mean_coverage /= ok;
+        a.mean_quality /= ok;
+        a.mean_time_ms /= ok;
+    }
+    a.mean_coverage_error = crops ? a.mean_coverage_error / crops : kNaN;
+    return a;
+}
+
+double spearman(const std::vector<double>& a, const std::vector<double>& b)
+{
+    if (a.size() != b.size() || a.size() < 3) return kNaN;
+    const auto ra = ranks(a), rb = ranks(b);
+    const double n = static_cast<double>(a.size());
+    const double ma = std::accumulate(ra.begin(), ra.end(), 0.0) / n;
+    const double mb = std::accumulate(rb.begin(), rb.end(), 0.0) / n;
+    double sab = 0, saa = 0, sbb = 0;
+    for (std::size_t i = 0; i < ra.size(); ++i)
+    {
+        sab += (ra[i] - ma) * (rb[i] - mb);
+        saa += (ra[i] - ma) * (ra[i] - ma);
+        sbb += (rb[i] - mb) * (rb[i] - mb);
+    }
+    if (saa <= 0 || sbb <= 0) return kNaN;
+    return sab / std::sqrt(saa * sbb);
+}
+
+Summary summarize(const std::vector<CaseResult>& results)
+{
+    Summary s;
+    std::vector<const CaseResult*> pooled, pooled_gen, real;
+    for (const auto& kind : kindOrder())
+    {
+        std::vector<const CaseResult*> of_kind;
+        for (const auto& r : results)
+            if (r.spec.kind == kind) of_kind.push_back(&r);
+        if (!of_kind.empty()) s.kinds.push_back(aggregate(kind, of_kind));
+    }
+    for (const auto& r : results)
+    {
+        if (r.spec.source == "real_pair")
+        {
+            real.push_back(&r);
+            continue;
+        }
+        if (r.error.empty() && r.spec.kind != "different" && r.truth_check.share() < 0.95)
+            ++s.truth_failures;
+        if (r.spec.kind == "different") continue;
+        pooled.push_back(&r);
+        if (r.spec.source == "generated") pooled_gen.push_back(&r);
+    }
+    s.pooled = aggregate("pooled", pooled);
+    s.pooled_generated = aggregate("pooled generated", pooled_gen);
+    s.real = aggregate("real pairs", real);
+    // Spearman per family and ladder, pooled over the family's buildings.
+    std::map<std::pair<std::string, std::string>,
+             std::pair<std::vector<double>, std::vector<double>>>
+        ladders;
+    for (const auto& r : results)
+    {
+        if (!r.error.empty() || r.spec.severity < 0) continue;
+        std::vector<std::string> which;
+        if (r.spec.severity == 0)
+            which = {"breaks", "slam"};  // the undamaged map starts both ladders
+        else
+            which = {r.spec.ladder};
+        for (const auto& l : which)
+        {
+            if (l == "slam" && r.spec.source != "generated") continue;
+            auto& pts = ladders[{r.spec.family, l}];
+            pts.first.push_back(-static_cast<double>(r.spec.severity));
+            pts.second.push_back(r.score.quality);
+        }
+    }
+    for (const auto& [key, pts] : ladders)
+    {
+        if (pts.first.size() < 3) continue;
+        FamilyLadder f;
+        f.family = key.first;
+        f.ladder = key.second;
+        f.points = pts.first.size();
+        f.spearman = spearman(pts.first, pts.second);
+        s.ladders.push_back(f);
+    }
+    return s;
+}
+
+std::string formatSummary(const Summary& s, const std::vector<CaseResult>& results)
+{
+    std::ostringstream o;
+    auto row = [&](const Aggregate& a)
+    {
+        char buf[400];
+        std::snprintf(
+            buf, sizeof buf, "%-18s %5zu %4zu %7s %6zu %6zu %6s %6s %7s %6s %6s %6s %6s %8s\n",
+            a.name.c_str(), a.cases, a.errors, num(a.truth_min).c_str(), a.matched, a.true_pairs,
+            num(a.precision()).c_str(), num(a.recall()).c_str(),
+            a.broken ? (std::to_string(a.broken_exact) + "/" + std::to_string(a.broken)).c_str()
+                     : "-",
+            a.broken ? num(a.max_rotation_error_deg, 1).c_str() : "-", num(a.mean_coverage).c_str(),
+            num(a.max_coverage).c_str(), num(a.mean_quality).c_str(),
+            num(a.mean_time_ms, 0).c_str());
+        o << buf;
+    };
+    o << "kind               cases  err truth_min matched   true  prec recall broken rot_err"
+         "  cov  covmax quality  time_ms\n";
+    for (const auto& a : s.kinds) row(a);
+    row(s.pooled_generated);
+    row(s.pooled);
+    o << "\nfamily             ladder  points  spearman(severity, quality)\n";
+    for (const auto& f : s.ladders)
+    {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "%-18s %-7s %6zu  %s\n", f.family.c_str(), f.ladder.c_str(),
+                      f.points, num(f.spearman).c_str());
+        o << buf;
+    }
+    for (const auto& a : s.kinds)
+        if (a.name == "crop")
+            o << "\ncrop: mean |coverage - share of ground-truth vertices kept| = "
+              << num(a.mean_coverage_error) << "\n";
+    o << "\nreal pairs           truth  matched   true  prec recall counterp  cov  quality broken"
+         "  time_ms\n";
+    for (const auto& r : results)
+    {
+        if (r.spec.source != "real_pair") continue;
+        char buf[400];
+        std::snprintf(buf, sizeof buf, "%-22s %5s %7zu %6zu %6s %6s %8zu %6s %6s %4d %8s  %s\n",
+                      r.spec.building.c_str(), num(r.truth_check.share()).c_str(), r.score.matched,
+                      r.score.true_pairs, num(r.score.precision).c_str(),
+                      num(r.score.recall).c_str(), r.score.gt_with_counterpart,
+                      num(r.score.coverage).c_str(), num(r.score.quality).c_str(),
+                      r.score.brokenness_found, num(r.time_ms, 0).c_str(),
+                      r.error.empty() ? "" : ("ERROR " + r.error).c_str());
+        o << buf;
+    }
+    row(s.real);
+    o << "\ntruth check: " << s.truth_failures
+      << " corpus case(s) under 95 % of occupied cells on ground-truth walls\n";
+    return o.str();
+}
+
+std::vector<std::string> checkFloors(const Summary& s, const std::string& text,
+                                     const std::string& file)
+{
+    std::vector<std::string> failures;
+    std::istringstream in(text);
+    std::string line;
+    int line_no = 0;
+    while (std::getline(in, line))
+    {
+        ++line_no;
+        const auto hash = line.find('#');
+        if (hash != std::string::npos) line.resize(hash);
+        std::istringstream ls(line);
+        std::string metric, which;
+        double minimum = 0;
+        if (!(ls >> metric)) continue;
+        if (!(ls >> which >> minimum))
+            throw std::invalid_argument(file + ":" + std::to_string(line_no) +
+                                        ": expected '<metric> <aggregate> <minimum>'");
+        const Aggregate* a = nullptr;
+        if (which == "pooled") a = &s.pooled;
+        if (which == "real") a = &s.real;
+        for (const auto& k : s.kinds)
+            if (k.name == which) a = &k;
+        if (!a)
+        {
+            failures.push_back(file + ":" + std::to_string(line_no) + ": no cases of '" + which +
+                               "' were run");
+            continue;
+        }
+        double v = 0;
+        if (metric == "precision")
+            v = a->precision();
+        else if (metric == "recall")
+            v = a->recall();
+        else if (metric == "brokenness_exact")
+            v = a->broken ? static_cast<double>(a->broken_exact) / a->broken : kNaN;
+        else if (metric == "truth_min")
+            v = a->truth_min;
+        else
+            throw std::invalid_argument(file + ":" + std::to_string(line_no) +
+                                        ": unknown metric '" + metric + "'");
+        if (!(v >= minimum))
+            failures.push_back(metric + " of " + which + " = " + num(v) + " is under its floor " +
+                               num(minimum) + " (" + file + ":" + std::to_string(line_no) + ")");
+    }
+    return failures;
+}
+}  // namespace mrpt_topoeval::validation

@@ -1,0 +1,74 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+// Summaries of the validation corpus (doc/validation.md, "Measures"): per kind, pooled, per
+// family (Spearman of severity vs quality), the real pairs; and the floors of the CI subset.
+
+#include <string>
+#include <vector>
+
+#include "corpus.h"
+#include "scoring.h"
+
+namespace mrpt_topoeval::validation
+{
+/** One scored case. */
+struct CaseResult
+{
+    CaseSpec spec;
+    std::string truth_source;
+    TruthCheck truth_check;
+    double wall_tolerance_m = 0.0;
+    CaseScore score;
+    double time_ms = 0.0;  //!< evaluate() on the case (graph of the map, match, scores).
+    std::string error;     //!< Non-empty when the case threw.
+};
+
+/** Aggregates of a set of cases. Precision and recall are pooled (sums of pairs). */
+struct Aggregate
+{
+    std::string name;
+    std::size_t cases = 0, errors = 0;
+    double truth_min = 1.0;  //!< Smallest truth-check share.
+    std::size_t matched = 0, true_pairs = 0, counterparts = 0;
+    double precision() const;
+    double recall() const;
+    std::size_t broken = 0, broken_exact = 0;  //!< Cases with injected breaks, found exactly.
+    double max_rotation_error_deg = 0.0;       //!< Over every group of every broken case.
+    double mean_coverage = 0.0, max_coverage = 0.0, mean_quality = 0.0;
+    double mean_coverage_error = 0.0;  //!< Crops: mean |coverage - share with counterpart|.
+    double mean_time_ms = 0.0;
+};
+
+Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*>& cases);
+
+/** Spearman's rank correlation (ties get mean ranks); NaN for fewer than 3 points or no spread. */
+double spearman(const std::vector<double>& a, const std::vector<double>& b);
+
+struct FamilyLadder
+{
+    std::string family, ladder;
+    std::size_t points = 0;
+    double spearman = 0.0;  //!< Of -severity vs quality: 1 = quality falls as damage grows.
+};
+
+struct Summary
+{
+    std::vector<Aggregate> kinds;       //!< Corpus cases (not real pairs), per kind.
+    Aggregate pooled;                   //!< Every corpus case except "different".
+    Aggregate pooled_generated;         //!< ... of generated buildings only.
+    std::vector<FamilyLadder> ladders;  //!< Per family and ladder.
+    Aggregate real;                     //!< The real pairs, pooled.
+    std::size_t truth_failures = 0;     //!< Corpus cases under 95 % in the truth check.
+};
+
+Summary summarize(const std::vector<CaseResult>& results);
+
+/** The table printed on stdout and written to summary.txt. */
+std::string formatSummary(const Summary& s, const std::vector<CaseResult>& results);
+
+/** Checks `floors_text` (lines "<metric> <aggregate> <minimum>", '#' comments; metrics:
+ * precision, recall, brokenness_exact, truth_min; aggregates: a kind, "pooled" or "real") against
+ * the summary. Returns the failures, one line each; throws std::invalid_argument on a bad line. */
+std::vector<std::string> checkFloors(const Summary& s, const std::string& floors_text,
+                                     const std::string& floors_file);
+}  // namespace mrpt_topoeval::validation

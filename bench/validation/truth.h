@@ -1,0 +1,52 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+// The validation corpus (doc/validation.md): what is true about a map against its ground truth,
+// established without the matcher (by construction, known transforms, poses or keypoints).
+
+#include <Eigen/Core>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mrpt_topoeval::validation
+{
+/** Where a point of the map's world frame lies in the ground truth's world frame [m], or
+ * nothing where the map has no truth there (another building, a point outside every part). */
+using TruthMapping = std::function<std::optional<Eigen::Vector2d>(const Eigen::Vector2d& p_map)>;
+
+/** A rigid transform p_gt = R(yaw) p_map + t, for building truth mappings. */
+struct Rigid2D
+{
+    double yaw_rad = 0.0;
+    Eigen::Vector2d t_m{0.0, 0.0};
+    Eigen::Vector2d apply(const Eigen::Vector2d& p) const;
+    Rigid2D inverse() const;
+    /** (*this) o (other): first other, then this. */
+    Rigid2D compose(const Rigid2D& other) const;
+};
+
+/** Everything the scorer needs to know about one map against its ground truth. */
+struct Truth
+{
+    TruthMapping mapping;
+    /** Human-readable origin of the truth ("by construction", "known transform (data README)",
+     * "same frame", "keyframe poses", "12 hand-labelled keypoints, fit rmse 0.08 m"). */
+    std::string source;
+    /** Broken maps: the rigid part (index into part_yaw_deg) a map point belongs to, -1 for
+     * none; unset for maps that are not broken by construction. */
+    std::function<int(const Eigen::Vector2d& p_map)> part_of;
+    /** Rotation of each part, map -> ground truth [deg]; part 0 is the unbroken rest. */
+    std::vector<double> part_yaw_deg;
+    /** Breaks injected (brokenness the scorer expects); -1 when not known (real maps, SLAM). */
+    int injected_breaks = -1;
+    /** Truth check: an occupied map cell mapped into the ground truth must lie within this of a
+     * ground-truth obstacle cell [m]. */
+    double wall_tolerance_m = 0.10;
+    /** Map points that were added on purpose and are no walls of the ground truth (speckles,
+     * furniture): left out of the truth check. Unset = none. */
+    std::function<bool(const Eigen::Vector2d& p_map)> is_clutter;
+    /** True for a different building: no pair can be true, coverage must be ~0. */
+    bool different_building = false;
+};
+}  // namespace mrpt_topoeval::validation
