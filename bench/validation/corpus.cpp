@@ -1,6 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include "corpus.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -143,11 +144,14 @@ Corpus buildCorpus(const CorpusOptions& opts)
         if (other == i && hi - lo > 1) other = lo + (i - lo + 1) % (hi - lo);
         addVariants(corpus, i, other, generated, opts.quick, opts.seed);
     }
-    // Real pairs (quick: the two smallest with a same-frame or known-transform truth).
+    // Real pairs (quick: four small ones, one of each kind of truth but keypoints).
+    const std::vector<std::string> quick_pairs = {"gh25_vs_icp_slam", "house_6ccdcaa_vs_2333d24",
+                                                  "gazebo_gmapping", "floorplan_office_a_furnished"};
     for (std::size_t p = 0; p < corpus.real_pairs.size(); ++p)
     {
         const RealPair& rp = corpus.real_pairs[p];
-        if (opts.quick && rp.name != "gh25_vs_icp_slam" && rp.name != "house_2020_vs_2019")
+        if (opts.quick &&
+            std::find(quick_pairs.begin(), quick_pairs.end(), rp.name) == quick_pairs.end())
             continue;
         CaseSpec c;
         c.id = "real/" + rp.name;

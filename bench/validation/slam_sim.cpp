@@ -229,8 +229,27 @@ void configure(mrpt::slam::CMetricMapBuilderICP& builder)
     builder.initialize();
 }
 
-/** p_gt = true_k (+) (p in the frame of estimated_k), k the nearest estimated keyframe. */
-TruthMapping keyframeTruth(const std::vector<CPose2D>& true_kf, const std::vector<CPose2D>& est_kf)
+/** Which keyframe's scan put an obstacle into each cell of `grid` (the last one that hit it;
+ * -1 for none): a cell's truth is the pose of the scan that drew it. Where a poor odometry slip
+ * made SLAM draw one wall twice, each copy then maps through its own keyframes. */
+struct CellOwners
+{
+    double x_min = 0, y_min = 0, res = 1;
+    int size_x = 0, size_y = 0;
+    std::vector<int> owner;
+    int at(const Eigen::Vector2d& p) const
+    {
+        const int cx = static_cast<int>(std::floor((p.x() - x_min) / res));
+        const int cy = static_cast<int>(std::floor((p.y() - y_min) / res));
+        if (cx < 0 || cy < 0 || cx >= size_x || cy >= size_y) return -1;
+        return owner[static_cast<std::size_t>(cy) * size_x + cx];
+    }
+};
+
+/** p_gt = true_k (+) (p in the frame of estimated_k), k the keyframe whose scan drew p's cell,
+ * else the nearest estimated keyframe. */
+TruthMapping keyframeTruth(const std::vector<CPose2D>& true_kf, const std::vector<CPose2D>& est_kf,
+                           std::shared_ptr<const CellOwners> owners)
 {
     struct Frame
     {
@@ -242,17 +261,23 @@ TruthMapping keyframeTruth(const std::vector<CPose2D>& true_kf, const std::vecto
         frames->push_back({est_kf[k].x(), est_kf[k].y(), std::cos(est_kf[k].phi()),
                            std::sin(est_kf[k].phi()), true_kf[k].x(), true_kf[k].y(),
                            std::cos(true_kf[k].phi()), std::sin(true_kf[k].phi())});
-    return [frames](const Eigen::Vector2d& p) -> std::optional<Eigen::Vector2d>
+    return [frames, owners](const Eigen::Vector2d& p) -> std::optional<Eigen::Vector2d>
     {
         const Frame* best = nullptr;
         double best_d2 = std::numeric_limits<double>::infinity();
+        const int k = owners ? owners->at(p) : -1;
+        if (k >= 0 && static_cast<std::size_t>(k) < frames->size())
+            best = &(*frames)[static_cast<std::size_t>(k)];
         for (const Frame& f : *frames)
         {
-            const double d2 = (p.x() - f.ex) * (p.x() - f.ex) + (p.y() - f.ey) * (p.y() - f.ey);
-            if (d2 < best_d2)  // strict: ties go to the earliest keyframe
+            if (best && k >= 0) break;
             {
-                best_d2 = d2;
-                best = &f;
+                const double d2 = (p.x() - f.ex) * (p.x() - f.ex) + (p.y() - f.ey) * (p.y() - f.ey);
+                if (d2 < best_d2)  // strict: ties go to the earliest keyframe
+                {
+                    best_d2 = d2;
+                    best = &f;
+                }
             }
         }
         if (!best) return std::nullopt;
@@ -330,6 +355,7 @@ SlamRun simulateIcpSlam(const mrpt::maps::COccupancyGridMap2D& world,
     // the step (and so the true pose) of each.
     mrpt::maps::CSimpleMap sm;
     builder.getCurrentlyBuiltMap(sm);
+    std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> kf_scans;
     for (std::size_t k = 0; k < sm.size(); ++k)
     {
         mrpt::poses::CPose3DPDF::Ptr pose_pdf;
@@ -340,13 +366,41 @@ SlamRun simulateIcpSlam(const mrpt::maps::COccupancyGridMap2D& world,
         if (it == step_of_time.end()) continue;
         run.estimated_keyframes.emplace_back(pose_pdf->getMeanVal());
         run.true_keyframes.push_back(poses[it->second]);
+        kf_scans.push_back(
+            std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(*kf_sf->begin()));
     }
 
     const auto grid =
         builder.getCurrentlyBuiltMetricMap()->mapByClass<mrpt::maps::COccupancyGridMap2D>();
     if (!grid) throw std::logic_error("simulateIcpSlam: the ICP-SLAM map has no occupancy grid");
     run.map = *grid;
-    run.truth = keyframeTruth(run.true_keyframes, run.estimated_keyframes);
+    auto owners = std::make_shared<CellOwners>();
+    owners->x_min = run.map.getXMin();
+    owners->y_min = run.map.getYMin();
+    owners->res = run.map.getResolution();
+    owners->size_x = static_cast<int>(run.map.getSizeX());
+    owners->size_y = static_cast<int>(run.map.getSizeY());
+    owners->owner.assign(static_cast<std::size_t>(owners->size_x) * owners->size_y, -1);
+    for (std::size_t k = 0; k < kf_scans.size(); ++k)
+    {
+        const auto& scan = kf_scans[k];
+        if (!scan) continue;
+        const CPose2D sensor = run.estimated_keyframes[k] + CPose2D(scan->sensorPose);
+        const std::size_t n = scan->getScanSize();
+        for (std::size_t r = 0; r < n; ++r)
+        {
+            if (!scan->getScanRangeValidity(r)) continue;
+            const double a = -0.5 * scan->aperture +
+                             scan->aperture * static_cast<double>(r) / static_cast<double>(n - 1);
+            const double range = scan->getScanRange(r);
+            const CPose2D hit = sensor + CPose2D(range * std::cos(a), range * std::sin(a), 0.0);
+            const int cx = static_cast<int>(std::floor((hit.x() - owners->x_min) / owners->res));
+            const int cy = static_cast<int>(std::floor((hit.y() - owners->y_min) / owners->res));
+            if (cx < 0 || cy < 0 || cx >= owners->size_x || cy >= owners->size_y) continue;
+            owners->owner[static_cast<std::size_t>(cy) * owners->size_x + cx] = static_cast<int>(k);
+        }
+    }
+    run.truth = keyframeTruth(run.true_keyframes, run.estimated_keyframes, owners);
     return run;
 }
 }  // namespace mrpt_topoeval::validation
