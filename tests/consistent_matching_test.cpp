@@ -106,7 +106,7 @@ Score score(const std::string& name, const COccupancyGridMap2D& gg, const Topolo
     if (std::getenv("TOPOEVAL_TRUE_ERRORS"))
     {
         // Distance errors between true pairs: (gt vertex, nearest active map vertex mapped).
-        std::vector<std::tuple<int, int>> tp;
+        std::vector<std::tuple<int, int>> truth_pairs;
         for (std::size_t a = 0; a < gt.vertices.size(); ++a)
         {
             if (!gv.v[a].active) continue;
@@ -119,14 +119,14 @@ Score score(const std::string& name, const COccupancyGridMap2D& gg, const Topolo
                     (to_gt(map.vertices[b].position_m) - gt.vertices[a].position_m).norm();
                 if (d < bd) bd = d, best = int(b);
             }
-            if (best >= 0 && isTrue(gt, map, to_gt, int(a), best)) tp.emplace_back(int(a), best);
+            if (best >= 0 && isTrue(gt, map, to_gt, int(a), best)) truth_pairs.emplace_back(int(a), best);
         }
         std::vector<double> e_abs, e_norm;
-        for (std::size_t i = 0; i < tp.size(); ++i)
-            for (std::size_t j = i + 1; j < tp.size(); ++j)
+        for (std::size_t i = 0; i < truth_pairs.size(); ++i)
+            for (std::size_t j = i + 1; j < truth_pairs.size(); ++j)
             {
-                auto [a1, b1] = tp[i];
-                auto [a2, b2] = tp[j];
+                auto [a1, b1] = truth_pairs[i];
+                auto [a2, b2] = truth_pairs[j];
                 const double dg = (gt.vertices[a1].position_m - gt.vertices[a2].position_m).norm();
                 const double dm =
                     (map.vertices[b1].position_m - map.vertices[b2].position_m).norm();

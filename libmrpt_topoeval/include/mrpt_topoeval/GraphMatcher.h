@@ -112,11 +112,14 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
     void validate() const;
 };
 
-/** Matches a ground-truth graph and a map's graph (paper III-B): subgraph isomorphisms by
- * wavefront propagation from every unassigned vertex (Algorithm 1), biggest first, then
- * neighbour growing from the match's border. Spurious vertices are skipped. `similarity` has a
- * row per ground-truth vertex and a column per map vertex (attributeSimilarity() or
- * icpSimilarity()). Never throws on small or empty graphs: the match is then empty or partial,
+/** Matches a ground-truth graph and a map's graph. method = consistent (default): groups of
+ * candidate pairs whose mutual distances agree in both maps (maximum cliques of the pairwise
+ * consistency graph, one group per rigid part), grown by local rigid fits; in the result a
+ * group is an "isomorphism" and grown pairs are "neighbour growing". method = paper (III-B):
+ * subgraph isomorphisms by wavefront propagation from every unassigned vertex (Algorithm 1),
+ * biggest first, then neighbour growing from the match's border. Spurious vertices are skipped.
+ * `similarity` has a row per ground-truth vertex and a column per map vertex (attributeSimilarity()
+ * or icpSimilarity()). Never throws on small or empty graphs: the match is then empty or partial,
  * with a message. Deterministic. \throws InputError on parameters or a matrix of wrong size. */
 GraphMatch matchGraphs(const TopologyGraph& ground_truth, const TopologyGraph& map,
                        const SimilarityMatrix& similarity,
