@@ -256,6 +256,7 @@ TEST(GraphMatcher, RecursionIsBoundedOnSymmetricMaps)
     // The plus crossing and the lattice are symmetric: every rotation of the seed is good. With
     // a budget of one branch per seed the match is still complete (no blow-up, no hang).
     GraphMatcherParameters p;
+    p.method = MatchMethod::Paper;  // the wavefront's recursion bound
     p.max_branches_per_seed = 1;
     p.min_isomorphism_vertices = 2;
     const TopologyGraph g = buildTopologyGraph(makeLargeBuilding(700));
@@ -343,5 +344,30 @@ TEST(GraphMatcher, RealPairsTableII)
         std::set<int> maps;
         for (const auto& p : m.pairs) EXPECT_TRUE(maps.insert(p.map).second) << map_rel;
         EXPECT_TRUE(!m.pairs.empty() || !m.messages.empty()) << map_rel;
+    }
+}
+
+TEST(GraphMatcher, PaperMethodKeepsItsResults)
+{
+    // method = paper is the matcher of doc/matching.md §3-4, unchanged by the consistent
+    // method's arrival: its documented figures (office rotated: 24 of 24; broken by 12, -20
+    // and 28 degrees: 22, 21 and 22 of 24).
+    GraphMatcherParameters paper;
+    paper.method = MatchMethod::Paper;
+    const auto grid = makeOfficeMap();
+    const TopologyGraph gt = buildTopologyGraph(grid);
+    const COccupancyGridMap2D moved = transformGrid(grid, 137.0 * kDeg, {4.2, -3.1});
+    const GraphMatch m = matchGraphs(gt, buildTopologyGraph(moved),
+                                     attributeSimilarity(gt, buildTopologyGraph(moved), {}), paper);
+    EXPECT_EQ(m.pairs.size(), 24u);
+    EXPECT_EQ(m.isomorphism_sizes, std::vector<std::size_t>{24});
+    const Eigen::Vector2d pivot(19.0, 9.0);
+    auto in_part = [](double x, double) { return x > 19.0; };
+    for (auto [yaw_deg, want] : {std::pair{12.0, 22u}, {-20.0, 21u}, {28.0, 22u}})
+    {
+        const TopologyGraph map =
+            buildTopologyGraph(breakMap(grid, pivot, yaw_deg * kDeg, in_part));
+        EXPECT_EQ(matchGraphs(gt, map, attributeSimilarity(gt, map, {}), paper).pairs.size(), want)
+            << yaw_deg;
     }
 }

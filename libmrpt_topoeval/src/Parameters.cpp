@@ -47,7 +47,7 @@ const std::map<std::string, std::string> kSectionComments = {
     {kSimilaritySection,
      "# Similarity of two vertices, from attributes or by ICP (paper section III-A)."},
     {kMatcherSection,
-     "# Matching two graphs: isomorphism by wavefront, neighbour growing (paper III-B)."},
+     "# Matching two graphs: consistent groups (default) or the paper's isomorphisms (III-B)."},
     {kQualitySection,
      "# Map attributes and scores from the match (paper section IV; doc/quality.md)."},
 };

@@ -48,6 +48,23 @@ struct GrownPair
 };
 std::vector<GrownPair> growNeighbours(MatchContext& ctx, std::vector<int>& iso_of_gt);
 
+/** The consistent method's result: the groups' pairs (gt, map) as found by the clique search
+ * (group i's core) and the pairs added by growing, with the group they joined. */
+struct ConsistentMatch
+{
+    std::vector<std::vector<std::pair<int, int>>> cores;
+    std::vector<GrownPair> grown;
+    std::size_t candidates = 0;    //!< Candidate pairs (vertices of the consistency graph).
+    std::size_t clique_steps = 0;  //!< Branch-and-bound steps spent, all searches.
+};
+
+/** method = consistent: candidate pairs by similarity and degree, groups as maximum cliques of
+ * the pairwise distance-consistency graph (verified by a rigid fit), then growing of every
+ * group by local rigid fits. Writes the pairs into ctx. Uses the graphs' vertex positions only
+ * through distances within one map and rigid fits of one group's pairs. */
+ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGraph& map,
+                                     MatchContext& ctx);
+
 /** Smallest absolute difference of two angles [rad]. */
 double angleDistance(double a, double b);
 

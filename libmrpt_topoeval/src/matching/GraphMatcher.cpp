@@ -1,16 +1,110 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
-// Paper III-B: matching two Topology Graphs, isomorphisms first, then neighbour growing.
+// Matching two Topology Graphs: the paper's method (III-B: isomorphisms first, then neighbour
+// growing) or groups of geometrically consistent pairs (method = consistent).
 
 #include <mrpt_topoeval/GraphMatcher.h>
 #include <mrpt_topoeval/errors.h>
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 
 #include "internal/matching.h"
 
 namespace mrpt_topoeval
 {
+namespace
+{
+using Clock = std::chrono::steady_clock;
+using Elapsed = std::function<double(Clock::time_point)>;
+
+// method = paper: isomorphisms (Algorithm 1), then neighbour growing.
+void matchPaper(internal::MatchContext& ctx, GraphMatch& match, const Elapsed& ms)
+{
+    const auto t_iso = std::chrono::steady_clock::now();
+    const std::vector<internal::Isomorphism> isos = internal::findIsomorphisms(ctx);
+    match.timing_ms["isomorphism"] = ms(t_iso);
+
+    std::vector<int> iso_of_gt(ctx.gt.v.size(), -1);
+    for (int i = 0; i < static_cast<int>(isos.size()); ++i)
+    {
+        match.isomorphism_sizes.push_back(isos[i].pairs.size());
+        for (const auto& [a, b] : isos[i].pairs)
+        {
+            iso_of_gt[a] = i;
+            match.pairs.push_back({a, b, MatchStage::Isomorphism, ctx.similarity(a, b), i});
+        }
+    }
+    match.isomorphism = match.pairs.size();
+
+    if (ctx.params.neighbour_growing && !isos.empty())
+    {
+        const auto t_grow = std::chrono::steady_clock::now();
+        for (const auto& g : internal::growNeighbours(ctx, iso_of_gt))
+            match.pairs.push_back({g.gt, g.map, MatchStage::NeighbourGrowing,
+                                   ctx.similarity(g.gt, g.map), g.isomorphism});
+        match.timing_ms["neighbour_growing"] = ms(t_grow);
+    }
+    match.neighbour_growing = match.pairs.size() - match.isomorphism;
+    match.missing = static_cast<std::size_t>(ctx.gt.numActive()) - match.pairs.size();
+    std::sort(match.pairs.begin(), match.pairs.end(),
+              [](const VertexPair& x, const VertexPair& y)
+              { return x.ground_truth < y.ground_truth; });
+
+    if (isos.empty())
+    {
+        bool any_degree = false;
+        for (const auto& va : ctx.gt.v)
+            for (const auto& vb : ctx.map.v)
+                any_degree = any_degree || (va.active && vb.active && va.degree() == vb.degree());
+        match.messages.push_back(
+            any_degree
+                ? "no isomorphism of at least " +
+                      std::to_string(internal::minIsomorphismSize(ctx.params, ctx.gt.numActive(),
+                                                                  ctx.map.numActive())) +
+                      " vertices was found (graphs of " + std::to_string(ctx.gt.numActive()) +
+                      " and " + std::to_string(ctx.map.numActive()) +
+                      " matchable vertices): the maps share no structure the matcher trusts"
+                : "no vertex of the map has the degree of any ground-truth vertex: "
+                  "nothing is matched");
+    }
+}
+
+// method = consistent: groups of geometrically consistent pairs, then growing. The groups play
+// the isomorphisms' part in the result (stage "isomorphism" for a group's core pairs,
+// "neighbour_growing" for grown ones; isomorphism_sizes = the cores' sizes), so brokenness
+// seeds from the biggest groups as before.
+void matchConsistent(const TopologyGraph& ground_truth, const TopologyGraph& map,
+                     internal::MatchContext& ctx, GraphMatch& match, const Elapsed& ms)
+{
+    const auto t_groups = Clock::now();
+    const internal::ConsistentMatch found = internal::findConsistentGroups(ground_truth, map, ctx);
+    match.timing_ms["isomorphism"] = ms(t_groups);
+    for (std::size_t g = 0; g < found.cores.size(); ++g)
+    {
+        match.isomorphism_sizes.push_back(found.cores[g].size());
+        for (const auto& [a, b] : found.cores[g])
+            match.pairs.push_back({a, b, MatchStage::Isomorphism, ctx.similarity(a, b), int(g)});
+    }
+    match.isomorphism = match.pairs.size();
+    for (const auto& g : found.grown)
+        match.pairs.push_back({g.gt, g.map, MatchStage::NeighbourGrowing,
+                               ctx.similarity(g.gt, g.map), g.isomorphism});
+    match.neighbour_growing = match.pairs.size() - match.isomorphism;
+    match.missing = static_cast<std::size_t>(ctx.gt.numActive()) - match.pairs.size();
+    std::sort(match.pairs.begin(), match.pairs.end(),
+              [](const VertexPair& x, const VertexPair& y)
+              { return x.ground_truth < y.ground_truth; });
+    if (found.cores.empty())
+        match.messages.push_back(
+            "no group of at least " + std::to_string(ctx.params.min_group_vertices) +
+            " geometrically consistent pairs was found among " + std::to_string(found.candidates) +
+            " candidate pairs (graphs of " + std::to_string(ctx.gt.numActive()) + " and " +
+            std::to_string(ctx.map.numActive()) +
+            " matchable vertices): the maps share no structure the matcher trusts");
+}
+}  // namespace
+
 GraphMatch matchGraphs(const TopologyGraph& ground_truth, const TopologyGraph& map,
                        const SimilarityMatrix& similarity, const GraphMatcherParameters& params)
 {
@@ -48,51 +142,10 @@ GraphMatch matchGraphs(const TopologyGraph& ground_truth, const TopologyGraph& m
                                params,
                                std::vector<int>(ground_truth.vertices.size(), -1),
                                std::vector<int>(map.vertices.size(), -1)};
-    const auto t_iso = std::chrono::steady_clock::now();
-    const std::vector<internal::Isomorphism> isos = internal::findIsomorphisms(ctx);
-    match.timing_ms["isomorphism"] = ms(t_iso);
-
-    std::vector<int> iso_of_gt(ground_truth.vertices.size(), -1);
-    for (int i = 0; i < static_cast<int>(isos.size()); ++i)
-    {
-        match.isomorphism_sizes.push_back(isos[i].pairs.size());
-        for (const auto& [a, b] : isos[i].pairs)
-        {
-            iso_of_gt[a] = i;
-            match.pairs.push_back({a, b, MatchStage::Isomorphism, similarity(a, b), i});
-        }
-    }
-    match.isomorphism = match.pairs.size();
-
-    if (params.neighbour_growing && !isos.empty())
-    {
-        const auto t_grow = std::chrono::steady_clock::now();
-        for (const auto& g : internal::growNeighbours(ctx, iso_of_gt))
-            match.pairs.push_back({g.gt, g.map, MatchStage::NeighbourGrowing,
-                                   similarity(g.gt, g.map), g.isomorphism});
-        match.timing_ms["neighbour_growing"] = ms(t_grow);
-    }
-    match.neighbour_growing = match.pairs.size() - match.isomorphism;
-    match.missing = static_cast<std::size_t>(n_gt) - match.pairs.size();
-    std::sort(match.pairs.begin(), match.pairs.end(),
-              [](const VertexPair& x, const VertexPair& y)
-              { return x.ground_truth < y.ground_truth; });
-
-    if (isos.empty())
-    {
-        bool any_degree = false;
-        for (const auto& va : gt_view.v)
-            for (const auto& vb : map_view.v)
-                any_degree = any_degree || (va.active && vb.active && va.degree() == vb.degree());
-        match.messages.push_back(
-            any_degree ? "no isomorphism of at least " +
-                             std::to_string(internal::minIsomorphismSize(params, n_gt, n_map)) +
-                             " vertices was found (graphs of " + std::to_string(n_gt) + " and " +
-                             std::to_string(n_map) +
-                             " matchable vertices): the maps share no structure the matcher trusts"
-                       : "no vertex of the map has the degree of any ground-truth vertex: "
-                         "nothing is matched");
-    }
+    if (params.method == MatchMethod::Consistent)
+        matchConsistent(ground_truth, map, ctx, match, ms);
+    else
+        matchPaper(ctx, match, ms);
     match.timing_ms["total"] = ms(t0);
     return match;
 }

@@ -1,0 +1,405 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// method = consistent (doc/matching.md, "Consistent groups"): the paper's strict isomorphism
+// stops at every local difference of topology between two maps of one place (a missing dead
+// end, a split junction, a degree changed by a small loop). Here topology and similarity only
+// propose candidate pairs; geometry decides, as in correspondence-based registration
+// (TEASER++'s maximum clique of the pairwise-consistency graph, CLIPPER's consistency graph,
+// Parra Bustos et al. 2019 "A practical maximum clique algorithm for matching with pairwise
+// constraints"): two pairs are consistent when the distance between their ground-truth
+// vertices equals the distance between their map vertices. A distance within one map does not
+// depend on that map's frame, so the global frames of the maps play no part.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <tuple>
+
+#include "internal/horn.h"
+#include "internal/matching.h"
+
+namespace mrpt_topoeval::internal
+{
+namespace
+{
+struct Candidate
+{
+    int gt = -1, map = -1;
+    double similarity = 0.0;
+    double uncertainty_m = 0.0;  //!< clearance_tolerance_share x the smaller clearance
+};
+
+/** Maximum clique by branch and bound with a greedy-colouring bound (Tomita's MCQ, the
+ * algorithm of Parra Bustos et al.). Deterministic; stops after `budget` steps with the best
+ * clique found so far. */
+class MaxClique
+{
+public:
+    MaxClique(const std::vector<std::uint8_t>& adjacent, int n, std::size_t budget)
+        : m_adj(adjacent), m_n(n), m_budget(budget)
+    {
+    }
+
+    /** The largest clique among `vertices` (in the given order of preference). */
+    std::vector<int> run(std::vector<int> vertices)
+    {
+        m_best.clear();
+        // Highest consistency-graph degree first (MCQ's initial order), stable for ties.
+        std::vector<int> deg(m_n, 0);
+        for (int v : vertices)
+            for (int u : vertices) deg[v] += adj(u, v);
+        std::stable_sort(vertices.begin(), vertices.end(),
+                         [&](int a, int b) { return deg[a] > deg[b]; });
+        std::vector<int> order, colour;
+        colourSort(vertices, order, colour);
+        std::vector<int> r;
+        expand(r, order, colour);
+        return m_best;
+    }
+    std::size_t steps() const { return m_steps; }
+
+private:
+    bool adj(int a, int b) const { return m_adj[std::size_t(a) * m_n + b] != 0; }
+
+    // Greedy colouring of p: order by colour class, colour[i] = class number (1-based) of
+    // order[i]; the colour is an upper bound of the clique size within order[0..i].
+    void colourSort(const std::vector<int>& p, std::vector<int>& order, std::vector<int>& colour)
+    {
+        std::vector<std::vector<int>> classes;
+        for (int v : p)
+        {
+            std::size_t k = 0;
+            for (; k < classes.size(); ++k)
+            {
+                bool free = true;
+                for (int u : classes[k])
+                    if (adj(u, v))
+                    {
+                        free = false;
+                        break;
+                    }
+                if (free) break;
+            }
+            if (k == classes.size()) classes.emplace_back();
+            classes[k].push_back(v);
+        }
+        order.clear();
+        colour.clear();
+        for (std::size_t k = 0; k < classes.size(); ++k)
+            for (int v : classes[k])
+            {
+                order.push_back(v);
+                colour.push_back(int(k) + 1);
+            }
+    }
+
+    void expand(std::vector<int>& r, const std::vector<int>& p, const std::vector<int>& colour)
+    {
+        for (int i = int(p.size()) - 1; i >= 0; --i)
+        {
+            if (++m_steps > m_budget) return;
+            if (r.size() + std::size_t(colour[i]) <= m_best.size()) return;
+            const int v = p[i];
+            r.push_back(v);
+            std::vector<int> np;
+            for (int j = 0; j < i; ++j)
+                if (adj(v, p[j])) np.push_back(p[j]);
+            if (np.empty())
+            {
+                if (r.size() > m_best.size()) m_best = r;
+            }
+            else
+            {
+                std::vector<int> no, nc;
+                colourSort(np, no, nc);
+                expand(r, no, nc);
+            }
+            r.pop_back();
+        }
+    }
+
+    const std::vector<std::uint8_t>& m_adj;
+    int m_n;
+    std::size_t m_budget;
+    std::size_t m_steps = 0;
+    std::vector<int> m_best;
+};
+
+/** Vertices within `hops` view edges of v (v included). */
+std::vector<int> nearInGraph(const MatchView& view, int v, int hops)
+{
+    std::vector<int> out{v}, frontier{v};
+    for (int h = 0; h < hops; ++h)
+    {
+        std::vector<int> next;
+        for (int x : frontier)
+            for (const auto& inc : view.v[x].ring)
+                if (std::find(out.begin(), out.end(), inc.other) == out.end())
+                {
+                    out.push_back(inc.other);
+                    next.push_back(inc.other);
+                }
+        frontier = std::move(next);
+    }
+    return out;
+}
+
+// The biggest set of the clique's pairs connected by links: (g1, m1) and (g2, m2) are linked
+// when g2 lies within `hops` view edges of g1 and m2 within `hops` of m1. Ties: the first found.
+std::vector<int> largestLinkedComponent(const std::vector<int>& clique,
+                                        const std::vector<Candidate>& cands, const MatchView& gv,
+                                        const MatchView& mv, int hops)
+{
+    const std::size_t n = clique.size();
+    std::vector<std::vector<int>> near_gt(n), near_map(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        near_gt[i] = nearInGraph(gv, cands[clique[i]].gt, hops);
+        near_map[i] = nearInGraph(mv, cands[clique[i]].map, hops);
+    }
+    auto contains = [](const std::vector<int>& v, int x)
+    { return std::find(v.begin(), v.end(), x) != v.end(); };
+    std::vector<int> component(n, -1), best;
+    for (std::size_t s = 0; s < n; ++s)
+    {
+        if (component[s] >= 0) continue;
+        std::vector<int> members{int(s)};
+        component[s] = int(s);
+        for (std::size_t k = 0; k < members.size(); ++k)
+        {
+            const int i = members[k];
+            for (std::size_t j = 0; j < n; ++j)
+                if (component[j] < 0 && contains(near_gt[i], cands[clique[j]].gt) &&
+                    contains(near_map[i], cands[clique[j]].map))
+                {
+                    component[j] = int(s);
+                    members.push_back(int(j));
+                }
+        }
+        if (members.size() > best.size()) best = members;
+    }
+    std::sort(best.begin(), best.end());
+    std::vector<int> out;
+    for (int k : best) out.push_back(clique[k]);
+    return out;
+}
+
+}  // namespace
+
+ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGraph& map,
+                                     MatchContext& ctx)
+{
+    const GraphMatcherParameters& p = ctx.params;
+    const SimilarityMatrix& S = ctx.similarity;
+    const int n_gt = int(gt.vertices.size()), n_map = int(map.vertices.size());
+    auto pg = [&](int a) -> const Eigen::Vector2d& { return gt.vertices[a].position_m; };
+    auto pm = [&](int b) -> const Eigen::Vector2d& { return map.vertices[b].position_m; };
+    auto degreeOk = [&](int a, int b)
+    { return std::abs(ctx.gt.v[a].degree() - ctx.map.v[b].degree()) <= p.max_degree_difference; };
+    auto uncertainty = [&](int a, int b)
+    {
+        return p.clearance_tolerance_share *
+               std::min(gt.vertices[a].clearance_m, map.vertices[b].clearance_m);
+    };
+    ConsistentMatch out;
+
+    // 1. Candidates: each gt vertex's k most similar map vertices, and each map vertex's k most
+    //    similar gt vertices, of a degree within max_degree_difference.
+    std::vector<std::uint8_t> is_cand(std::size_t(n_gt) * n_map, 0);
+    auto topK = [&](int n_rows, int n_cols, bool rows_are_gt)
+    {
+        for (int i = 0; i < n_rows; ++i)
+        {
+            if (!(rows_are_gt ? ctx.gt.v[i] : ctx.map.v[i]).active) continue;
+            std::vector<std::pair<double, int>> ranked;
+            for (int j = 0; j < n_cols; ++j)
+            {
+                const int a = rows_are_gt ? i : j, b = rows_are_gt ? j : i;
+                if (!ctx.gt.v[a].active || !ctx.map.v[b].active || !degreeOk(a, b)) continue;
+                const double s = S(a, b);
+                if (s >= p.min_candidate_similarity) ranked.emplace_back(-s, j);
+            }
+            const std::size_t k = std::min<std::size_t>(ranked.size(), p.candidates_per_vertex);
+            std::partial_sort(ranked.begin(), ranked.begin() + k, ranked.end());
+            for (std::size_t r = 0; r < k; ++r)
+            {
+                const int j = ranked[r].second;
+                is_cand[rows_are_gt ? std::size_t(i) * n_map + j : std::size_t(j) * n_map + i] = 1;
+            }
+        }
+    };
+    topK(n_gt, n_map, true);
+    topK(n_map, n_gt, false);
+    std::vector<Candidate> cands;
+    for (int a = 0; a < n_gt; ++a)
+        for (int b = 0; b < n_map; ++b)
+            if (is_cand[std::size_t(a) * n_map + b])
+                cands.push_back({a, b, S(a, b), uncertainty(a, b)});
+    const int n = int(cands.size());
+    out.candidates = cands.size();
+
+    // 2. The pairwise consistency graph (TEASER++'s "translation and rotation invariant
+    //    measurements"): one-to-one, and distances that agree.
+    auto distanceTolerance = [&](const Candidate& x, const Candidate& y, double dg, double dm)
+    {
+        return p.distance_tolerance_m + p.distance_tolerance_ratio * std::max(dg, dm) +
+               x.uncertainty_m + y.uncertainty_m;
+    };
+    std::vector<std::uint8_t> adjacent(std::size_t(n) * n, 0);
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j)
+        {
+            const Candidate &x = cands[i], &y = cands[j];
+            if (x.gt == y.gt || x.map == y.map) continue;
+            const double dg = (pg(x.gt) - pg(y.gt)).norm(), dm = (pm(x.map) - pm(y.map)).norm();
+            if (std::abs(dg - dm) <= distanceTolerance(x, y, dg, dm))
+                adjacent[std::size_t(i) * n + j] = adjacent[std::size_t(j) * n + i] = 1;
+        }
+
+    // 3. Groups: the maximum clique of the candidates still free, verified by a rigid fit
+    //    (distances alone accept a mirror image), accepted when big and wide enough; its
+    //    vertices are then taken and the next group searched (a broken map's other parts).
+    std::vector<std::uint8_t> excluded(n, 0);
+    MaxClique search(adjacent, n, std::size_t(p.max_clique_steps));
+    for (int attempt = 0; attempt < 2 * p.max_groups && int(out.cores.size()) < p.max_groups;
+         ++attempt)
+    {
+        std::vector<int> pool;
+        for (int i = 0; i < n; ++i)
+            if (!excluded[i] && ctx.gt_to_map[cands[i].gt] < 0 && ctx.map_to_gt[cands[i].map] < 0)
+                pool.push_back(i);
+        std::vector<int> clique = search.run(pool);
+        out.clique_steps += search.steps();
+        if (int(clique.size()) < p.min_group_vertices) break;
+        for (int i : clique) excluded[i] = 1;
+
+        // Rigid fit: drop the worst pair while any lies farther from its fitted place than
+        // its tolerance (position noise, plus the ratio over the group's extent for bending).
+        std::sort(clique.begin(), clique.end());
+        for (;;)
+        {
+            std::vector<Eigen::Vector2d> a, b;
+            for (int i : clique) a.push_back(pg(cands[i].gt)), b.push_back(pm(cands[i].map));
+            const Transform2D T = hornAlign(a, b);
+            Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+            for (const auto& x : a) centre += x;
+            centre /= double(a.size());
+            int worst = -1;
+            double worst_excess = 0.0;
+            for (std::size_t k = 0; k < clique.size(); ++k)
+            {
+                const Candidate& c = cands[clique[k]];
+                const double tol = p.distance_tolerance_m + c.uncertainty_m +
+                                   p.distance_tolerance_ratio * (a[k] - centre).norm();
+                const double excess = (a[k] - T.apply(b[k])).norm() - tol;
+                if (excess > worst_excess) worst_excess = excess, worst = int(k);
+            }
+            if (worst < 0) break;
+            clique.erase(clique.begin() + worst);
+            if (int(clique.size()) < p.min_group_vertices) break;
+        }
+        if (int(clique.size()) < p.min_group_vertices) continue;
+        // Topological support: pairs (g1, m1), (g2, m2) are linked when g2 is within
+        // support_hops edges of g1 and m2 within support_hops edges of m1. A true group is a
+        // connected piece of both graphs; a set consistent by chance (different buildings made
+        // of the same corridors and rooms) is scattered. Only the biggest linked component
+        // stays.
+        clique = largestLinkedComponent(clique, cands, ctx.gt, ctx.map, p.support_hops);
+        if (int(clique.size()) < p.min_group_vertices) continue;
+        double extent = 0.0;
+        for (int i : clique)
+            for (int j : clique)
+                extent = std::max(extent, (pg(cands[i].gt) - pg(cands[j].gt)).norm());
+        if (extent < p.min_group_extent_m) continue;
+
+        std::vector<std::pair<int, int>> core;
+        for (int i : clique)
+        {
+            core.emplace_back(cands[i].gt, cands[i].map);
+            ctx.gt_to_map[cands[i].gt] = cands[i].map;
+            ctx.map_to_gt[cands[i].map] = cands[i].gt;
+        }
+        out.cores.push_back(std::move(core));
+    }
+    if (out.cores.empty()) return out;
+
+    // 4. Growing: an unmatched gt vertex within two edges of a group's vertex is paired with the
+    //    unmatched map vertex, within two edges of the partners, that the rigid fit of the
+    //    group's nearby pairs puts nearest to it (within its tolerance). Every group proposes,
+    //    the best proposals are taken first, until nothing changes.
+    std::vector<int> group_of_gt(n_gt, -1);
+    for (std::size_t g = 0; g < out.cores.size(); ++g)
+        for (const auto& [a, b] : out.cores[g]) group_of_gt[a] = int(g);
+    for (int round = 0; round < n_gt; ++round)
+    {
+        struct Proposal
+        {
+            double score;
+            int gt, map, group;
+        };
+        std::vector<Proposal> proposals;
+        for (int a = 0; a < n_gt; ++a)
+        {
+            if (!ctx.gt.v[a].active || ctx.gt_to_map[a] >= 0) continue;
+            for (std::size_t g = 0; g < out.cores.size(); ++g)
+            {
+                // The group's pairs near a, nearest first.
+                std::vector<std::pair<double, int>> near;
+                std::vector<int> map_near;
+                bool linked = false;
+                for (int x = 0; x < n_gt; ++x)
+                {
+                    if (group_of_gt[x] != int(g)) continue;
+                    const double d = (pg(x) - pg(a)).norm();
+                    if (d <= p.growing_radius_m) near.emplace_back(d, x);
+                }
+                if (near.size() < 2) continue;
+                for (int x : nearInGraph(ctx.gt, a, 2))
+                    if (group_of_gt[x] == int(g) && x != a)
+                    {
+                        linked = true;
+                        for (int y : nearInGraph(ctx.map, ctx.gt_to_map[x], 2))
+                            map_near.push_back(y);
+                    }
+                if (!linked) continue;
+                std::sort(near.begin(), near.end());
+                if (near.size() > 8) near.resize(8);
+                std::vector<Eigen::Vector2d> ga, mb;
+                for (const auto& [d, x] : near)
+                    ga.push_back(pg(x)), mb.push_back(pm(ctx.gt_to_map[x]));
+                const Transform2D T = hornAlign(ga, mb);
+                std::sort(map_near.begin(), map_near.end());
+                map_near.erase(std::unique(map_near.begin(), map_near.end()), map_near.end());
+                for (int b : map_near)
+                {
+                    if (!ctx.map.v[b].active || ctx.map_to_gt[b] >= 0 || !degreeOk(a, b)) continue;
+                    if (S(a, b) < p.min_consistent_growing_similarity) continue;
+                    const double tol = p.position_tolerance_m + uncertainty(a, b) +
+                                       p.distance_tolerance_ratio * near.front().first;
+                    const double err = (T.apply(pm(b)) - pg(a)).norm();
+                    if (err > tol) continue;
+                    proposals.push_back({(1.0 - err / tol) + S(a, b), a, b, int(g)});
+                }
+            }
+        }
+        if (proposals.empty()) break;
+        std::sort(proposals.begin(), proposals.end(),
+                  [](const Proposal& x, const Proposal& y)
+                  { return std::tie(y.score, x.gt, x.map) < std::tie(x.score, y.gt, y.map); });
+        // Take only the best proposal per vertex in this round; the fits then change.
+        int taken = 0;
+        for (const Proposal& pr : proposals)
+        {
+            if (ctx.gt_to_map[pr.gt] >= 0 || ctx.map_to_gt[pr.map] >= 0) continue;
+            ctx.gt_to_map[pr.gt] = pr.map;
+            ctx.map_to_gt[pr.map] = pr.gt;
+            group_of_gt[pr.gt] = pr.group;
+            out.grown.push_back({pr.gt, pr.map, pr.group});
+            ++taken;
+        }
+        if (taken == 0) break;
+    }
+    return out;
+}
+
+}  // namespace mrpt_topoeval::internal

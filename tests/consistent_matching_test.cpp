@@ -1,0 +1,387 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// method = consistent (doc/matching.md): groups of pairs verified by local geometric
+// consistency. Every test knows the answer first (a transform from map to ground truth), and
+// counts, for each match, the true pairs (the map vertex, put into the ground truth's frame,
+// lies within max(0.5 m, half the ground-truth vertex's clearance) of its partner), precision
+// and recall (of the ground-truth vertices that have such a partner at all).
+// TOPOEVAL_DEBUG=1 prints every case; TOPOEVAL_DUMP_DIR=folder draws them.
+
+#include <gtest/gtest.h>
+#include <mrpt_topoeval/GraphBuilder.h>
+#include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/Parameters.h>
+#include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/output.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <set>
+
+#include "../libmrpt_topoeval/src/internal/MatchView.h"
+#include "synthetic_maps.h"
+#include "test_paths.h"
+
+using namespace mrpt_topoeval;
+using namespace mrpt_topoeval::testing;
+using mrpt::maps::COccupancyGridMap2D;
+
+namespace
+{
+constexpr double kDeg = M_PI / 180.0;
+using ToGt = std::function<Eigen::Vector2d(const Eigen::Vector2d&)>;
+
+Parameters tunedParameters()
+{
+    if (const char* ini = std::getenv("TOPOEVAL_MATCH_INI")) return Parameters::fromIniFile(ini);
+    return {};
+}
+
+struct Score
+{
+    GraphMatch match;
+    std::size_t matched = 0, correct = 0, possible = 0;
+    double precision() const { return matched ? double(correct) / double(matched) : 1.0; }
+    double recall() const { return possible ? double(correct) / double(possible) : 1.0; }
+};
+
+bool isTrue(const TopologyGraph& gt, const TopologyGraph& map, const ToGt& to_gt, int a, int b)
+{
+    const double tol = std::max(0.5, 0.5 * gt.vertices[a].clearance_m);
+    return (to_gt(map.vertices[b].position_m) - gt.vertices[a].position_m).norm() <= tol;
+}
+
+// The pooled figures over the cases of one test.
+struct Pool
+{
+    std::size_t matched = 0, correct = 0, possible = 0;
+    void add(const Score& s) { matched += s.matched, correct += s.correct, possible += s.possible; }
+    double precision() const { return matched ? double(correct) / double(matched) : 1.0; }
+    double recall() const { return possible ? double(correct) / double(possible) : 1.0; }
+};
+
+Score score(const std::string& name, const COccupancyGridMap2D& gg, const TopologyGraph& gt,
+            const COccupancyGridMap2D& mg, const TopologyGraph& map, const ToGt& to_gt,
+            const GraphMatcherParameters* mp = nullptr)
+{
+    const Parameters tp = tunedParameters();
+    Score s;
+    s.match =
+        matchGraphs(gt, map, attributeSimilarity(gt, map, tp.similarity), mp ? *mp : tp.matcher);
+    s.matched = s.match.pairs.size();
+    for (const VertexPair& p : s.match.pairs)
+        s.correct += isTrue(gt, map, to_gt, p.ground_truth, p.map) ? 1 : 0;
+    const internal::MatchView gv = internal::makeMatchView(gt), mv = internal::makeMatchView(map);
+    for (std::size_t a = 0; a < gt.vertices.size(); ++a)
+    {
+        if (!gv.v[a].active) continue;
+        bool any = false;
+        for (std::size_t b = 0; b < map.vertices.size() && !any; ++b)
+            any = mv.v[b].active && isTrue(gt, map, to_gt, int(a), int(b));
+        s.possible += any ? 1 : 0;
+    }
+    if (std::getenv("TOPOEVAL_DEBUG"))
+    {
+        std::cout << std::fixed << std::setprecision(2) << "  " << std::left << std::setw(44)
+                  << name << " matched " << std::setw(4) << s.matched << " true " << std::setw(4)
+                  << s.correct << " possible " << std::setw(4) << s.possible << " precision "
+                  << s.precision() << " recall " << s.recall() << "  groups";
+        for (auto n : s.match.isomorphism_sizes) std::cout << " " << n;
+        std::cout << " (+" << s.match.neighbour_growing << " grown) "
+                  << s.match.timing_ms.at("total") << " ms\n";
+        for (const VertexPair& p : s.match.pairs)
+            if (!isTrue(gt, map, to_gt, p.ground_truth, p.map))
+                std::cout << "    wrong: gt " << p.ground_truth << " -> map " << p.map << " (group "
+                          << p.isomorphism << ", " << toString(p.stage) << ") off by "
+                          << (to_gt(map.vertices[p.map].position_m) -
+                              gt.vertices[p.ground_truth].position_m)
+                                 .norm()
+                          << " m\n";
+    }
+    if (std::getenv("TOPOEVAL_TRUE_ERRORS"))
+    {
+        // Distance errors between true pairs: (gt vertex, nearest active map vertex mapped).
+        std::vector<std::tuple<int, int>> truth_pairs;
+        for (std::size_t a = 0; a < gt.vertices.size(); ++a)
+        {
+            if (!gv.v[a].active) continue;
+            int best = -1;
+            double bd = 1e18;
+            for (std::size_t b = 0; b < map.vertices.size(); ++b)
+            {
+                if (!mv.v[b].active) continue;
+                const double d =
+                    (to_gt(map.vertices[b].position_m) - gt.vertices[a].position_m).norm();
+                if (d < bd) bd = d, best = int(b);
+            }
+            if (best >= 0 && isTrue(gt, map, to_gt, int(a), best)) truth_pairs.emplace_back(int(a), best);
+        }
+        std::vector<double> e_abs, e_norm;
+        for (std::size_t i = 0; i < truth_pairs.size(); ++i)
+            for (std::size_t j = i + 1; j < truth_pairs.size(); ++j)
+            {
+                auto [a1, b1] = truth_pairs[i];
+                auto [a2, b2] = truth_pairs[j];
+                const double dg = (gt.vertices[a1].position_m - gt.vertices[a2].position_m).norm();
+                const double dm =
+                    (map.vertices[b1].position_m - map.vertices[b2].position_m).norm();
+                const double u1 =
+                    std::min(gt.vertices[a1].clearance_m, map.vertices[b1].clearance_m);
+                const double u2 =
+                    std::min(gt.vertices[a2].clearance_m, map.vertices[b2].clearance_m);
+                e_abs.push_back(std::abs(dg - dm));
+                e_norm.push_back(std::abs(dg - dm) /
+                                 (0.5 + 0.05 * std::max(dg, dm) + 0.5 * (u1 + u2)));
+            }
+        std::sort(e_abs.begin(), e_abs.end());
+        std::sort(e_norm.begin(), e_norm.end());
+        auto pct = [](const std::vector<double>& v, double q)
+        { return v.empty() ? 0.0 : v[std::size_t(q * (v.size() - 1))]; };
+        std::cout << "    true-pair distance errors (" << e_abs.size() << "): abs p50 "
+                  << pct(e_abs, 0.5) << " p90 " << pct(e_abs, 0.9) << " p99 " << pct(e_abs, 0.99)
+                  << " max " << pct(e_abs, 1.0) << "; /tol p90 " << pct(e_norm, 0.9) << " p99 "
+                  << pct(e_norm, 0.99) << " max " << pct(e_norm, 1.0) << "\n";
+    }
+    if (const char* dir = std::getenv("TOPOEVAL_DUMP_DIR"))
+        writePngAtomic(std::string(dir) + "/consistent_" + name + ".png",
+                       drawMatch(gg, gt, mg, map, s.match), true);
+    return s;
+}
+
+Score scoreGrids(const std::string& name, const COccupancyGridMap2D& gg,
+                 const COccupancyGridMap2D& mg, const ToGt& to_gt,
+                 const GraphMatcherParameters* mp = nullptr)
+{
+    const Parameters tp = tunedParameters();
+    return score(name, gg, buildTopologyGraph(gg, tp.graph), mg, buildTopologyGraph(mg, tp.graph),
+                 to_gt, mp);
+}
+
+// Sets a rectangle of a grid [m] to P(free) = p_free.
+void paint(COccupancyGridMap2D& g, double x0, double y0, double x1, double y1, float p_free)
+{
+    for (int cy = g.y2idx(y0); cy <= g.y2idx(y1); ++cy)
+        for (int cx = g.x2idx(x0); cx <= g.x2idx(x1); ++cx)
+            if (cx >= 0 && cy >= 0 && cx < int(g.getSizeX()) && cy < int(g.getSizeY()))
+                g.setCell(cx, cy, p_free);
+}
+
+// The inverse of transformPoint() (map -> ground truth).
+ToGt undoMove(const COccupancyGridMap2D& src, double yaw_rad, const Eigen::Vector2d& shift)
+{
+    const Eigen::Vector2d c(0.5 * (src.getXMin() + src.getXMax()),
+                            0.5 * (src.getYMin() + src.getYMax()));
+    return [=](const Eigen::Vector2d& q)
+    { return Eigen::Vector2d(c + Eigen::Rotation2Dd(-yaw_rad) * (q - shift - c)); };
+}
+
+// The inverse of breakPoint(): a map point is in the moved part if its pre-image is.
+ToGt undoBreak(const Eigen::Vector2d& pivot, double yaw_rad,
+               const std::function<bool(double, double)>& in_part)
+{
+    return [=](const Eigen::Vector2d& q)
+    {
+        const Eigen::Vector2d back = pivot + Eigen::Rotation2Dd(-yaw_rad) * (q - pivot);
+        return in_part(back.x(), back.y()) ? back : q;
+    };
+}
+
+Score scoreMoved(const std::string& name, const COccupancyGridMap2D& gt_grid,
+                 const COccupancyGridMap2D& map_grid, double yaw_deg, const Eigen::Vector2d& shift)
+{
+    const COccupancyGridMap2D moved = transformGrid(map_grid, yaw_deg * kDeg, shift);
+    return scoreGrids(name, gt_grid, moved, undoMove(map_grid, yaw_deg * kDeg, shift));
+}
+
+void report(const std::string& what, const Pool& p)
+{
+    if (std::getenv("TOPOEVAL_DEBUG"))
+        std::cout << what << ": pooled matched " << p.matched << " true " << p.correct
+                  << " possible " << p.possible << " precision " << p.precision() << " recall "
+                  << p.recall() << "\n";
+}
+}  // namespace
+
+TEST(ConsistentMatching, RigidlyMovedCopiesByAnyAngle)
+{
+    Pool pool;
+    const auto office = makeOfficeMap();
+    const auto campus = makeCampusMap();
+    for (double yaw : {0.0, 23.0, 137.0, 301.0})
+    {
+        const Score s =
+            scoreMoved("office_" + std::to_string(int(yaw)), office, office, yaw, {4.2, -3.1});
+        EXPECT_EQ(s.correct, s.matched) << yaw;
+        EXPECT_GE(s.recall(), 0.9) << yaw;
+        pool.add(s);
+    }
+    for (double yaw : {37.0, 151.0})
+    {
+        const Score s =
+            scoreMoved("campus_" + std::to_string(int(yaw)), campus, campus, yaw, {5.0, -3.0});
+        EXPECT_EQ(s.correct, s.matched) << yaw;
+        EXPECT_GE(s.recall(), 0.9) << yaw;
+        pool.add(s);
+    }
+    report("moved", pool);
+}
+
+TEST(ConsistentMatching, LocalTopologyChanges)
+{
+    // Each case changes the topology locally, then moves the map by a non-right angle:
+    // a dead end removed (and, reversed, an extra one), a crossing split into two T-junctions
+    // 0.8 m apart, a pillar in a room (a small loop raising degrees).
+    Pool pool;
+    const auto office = makeOfficeMap();
+    auto no_dead_end = office;
+    paint(no_dead_end, 9.0, 2.0, 10.8, 7.9, 0.0f);  // the dead-end corridor going south
+    auto crossing = office, split = office;
+    // The inner room's west door moved in line with the southern dead end (a crossing at
+    // x = 9.9), and in the map 0.8 m west of it (two T-junctions).
+    paint(crossing, 7.0, 10.0, 8.0, 11.0, 0.0f);
+    paint(crossing, 9.4, 10.0, 10.4, 11.0, 1.0f);
+    paint(split, 7.0, 10.0, 8.0, 11.0, 0.0f);
+    paint(split, 8.6, 10.0, 9.6, 11.0, 1.0f);
+    auto pillar = office;
+    paint(pillar, 22.0, 3.5, 22.6, 4.1, 0.0f);  // in the big room south-east
+    struct Case
+    {
+        const char* name;
+        const COccupancyGridMap2D *gt, *map;
+    };
+    for (const Case& c :
+         {Case{"dead_end_missing", &office, &no_dead_end},
+          Case{"dead_end_extra", &no_dead_end, &office}, Case{"junction_split", &crossing, &split},
+          Case{"junction_merged", &split, &crossing}, Case{"pillar_loop", &office, &pillar}})
+    {
+        const Score s = scoreMoved(c.name, *c.gt, *c.map, 71.0, {-2.0, 3.0});
+        EXPECT_GE(s.precision(), 0.95) << c.name;
+        EXPECT_GE(s.recall(), 0.85) << c.name;
+        pool.add(s);
+    }
+    report("local changes", pool);
+    EXPECT_GE(pool.precision(), 0.97);
+    EXPECT_GE(pool.recall(), 0.9);
+}
+
+TEST(ConsistentMatching, BrokenMapsGiveOneGroupPerPart)
+{
+    Pool pool;
+    const auto campus = makeCampusMap();
+    const Eigen::Vector2d pivot(31.0, 18.0);
+    auto east = [](double x, double) { return x > 31.0; };
+    for (double yaw_deg : {12.0, -20.0, 28.0})
+    {
+        const auto broken = breakMap(campus, pivot, yaw_deg * kDeg, east);
+        const Score s = scoreGrids("campus_broken_" + std::to_string(int(yaw_deg)), campus, broken,
+                                   undoBreak(pivot, yaw_deg * kDeg, east));
+        EXPECT_GE(s.precision(), 0.95) << yaw_deg;
+        EXPECT_GE(s.recall(), 0.75) << yaw_deg;
+        EXPECT_GE(s.match.isomorphism_sizes.size(), 2u) << yaw_deg;
+        pool.add(s);
+    }
+    const auto office = makeOfficeMap();
+    const Eigen::Vector2d opivot(19.0, 9.0);
+    auto oeast = [](double x, double) { return x > 19.0; };
+    for (double yaw_deg : {12.0, -20.0})
+    {
+        const auto broken = breakMap(office, opivot, yaw_deg * kDeg, oeast);
+        const Score s = scoreGrids("office_broken_" + std::to_string(int(yaw_deg)), office, broken,
+                                   undoBreak(opivot, yaw_deg * kDeg, oeast));
+        EXPECT_GE(s.precision(), 0.95) << yaw_deg;
+        pool.add(s);
+    }
+    report("broken", pool);
+    EXPECT_GE(pool.precision(), 0.97);
+    EXPECT_GE(pool.recall(), 0.75);
+}
+
+TEST(ConsistentMatching, DifferentBuildingsShareLittle)
+{
+    const auto office = makeOfficeMap();
+    const auto lattice = makeLargeBuilding(700);
+    const auto campus = makeCampusMap();
+    auto never = [](const Eigen::Vector2d&) { return Eigen::Vector2d(1e9, 1e9); };
+    for (auto [name, a, b] : {std::tuple{"office_vs_lattice", &office, &lattice},
+                              {"lattice_vs_office", &lattice, &office},
+                              {"office_vs_campus", &office, &campus},
+                              {"campus_vs_office", &campus, &office}})
+    {
+        const Score s = scoreGrids(name, *a, *b, never);
+        EXPECT_LE(double(s.matched), 0.15 * double(s.match.pairs.size() + s.match.missing)) << name;
+    }
+}
+
+namespace
+{
+std::optional<Score> realPair(const std::string& name, const std::string& gt_rel,
+                              const std::string& map_rel, const ToGt& to_gt)
+{
+    const auto gf = sharedDataFile(gt_rel), mf = sharedDataFile(map_rel);
+    if (!gf || !mf) return std::nullopt;
+    return scoreGrids(name, loadMap(*gf).grid, loadMap(*mf).grid, to_gt);
+}
+const ToGt kIdentity = [](const Eigen::Vector2d& p) { return p; };
+}  // namespace
+
+TEST(ConsistentMatching, Gh25FloorPlanAgainstIcpSlam)
+{
+    // data/README.md: p_gt = R(+0.97 deg) p_map + (20.03, 9.08) m.
+    const auto s = realPair("gh25", "rawlogs/gh25_gt_trinary_res0.05.yaml",
+                            "slam_maps/driving_in_office_icp-slam_app-final.yaml",
+                            [](const Eigen::Vector2d& p) {
+                                return Eigen::Vector2d(Eigen::Rotation2Dd(0.97 * kDeg) * p +
+                                                       Eigen::Vector2d(20.03, 9.08));
+                            });
+    if (!s) GTEST_SKIP() << "no ../shared/data";
+    EXPECT_GE(s->matched, 8u);
+    EXPECT_EQ(s->correct, s->matched);
+}
+
+TEST(ConsistentMatching, HouseMaps)
+{
+    // All three house maps share one frame.
+    const auto s = realPair("house_2020_vs_2019", "house/map_6ccdcaa.yaml",
+                            "house/map_2333d24.yaml", kIdentity);
+    if (!s) GTEST_SKIP() << "no ../shared/data";
+    EXPECT_GE(s->matched, 10u);
+    EXPECT_GE(s->precision(), 0.95);
+    realPair("house_gt_vs_2020", "house/house_gt_trinary_res0.05.yaml", "house/map_6ccdcaa.yaml",
+             kIdentity);
+    realPair("house_gt_vs_2019", "house/house_gt_trinary_res0.05.yaml", "house/map_2333d24.yaml",
+             kIdentity);
+}
+
+TEST(ConsistentMatching, GazeboOfficeSlamMaps)
+{
+    // Every map is in the ground truth's frame (Cartographer's wing excepted: its figures are
+    // printed, not asserted).
+    Pool pool;
+    for (const char* sys : {"gmapping", "slam_toolbox", "lidar_rtabmap", "rgbd_rtabmap"})
+    {
+        const auto s =
+            realPair(std::string("gazebo_") + sys, "gazebo_slam/office/office_ground_truth.yaml",
+                     std::string("gazebo_slam/office/") + sys + "_map.yaml", kIdentity);
+        if (!s) GTEST_SKIP() << "no ../shared/data";
+        pool.add(*s);
+    }
+    report("gazebo", pool);
+    EXPECT_GE(pool.precision(), 0.95);
+    realPair("gazebo_cartographer", "gazebo_slam/office/office_ground_truth.yaml",
+             "gazebo_slam/office/cartographer_map.yaml", kIdentity);
+}
+
+TEST(ConsistentMatching, IntelReferenceAgainstIcpSlam)
+{
+    // No known transform: the figures are printed; the matching time is held.
+    const auto never = [](const Eigen::Vector2d&) { return Eigen::Vector2d(1e9, 1e9); };
+    const auto s = realPair("intel_icp_slam", "radish/intel-corrected_ref.yaml",
+                            "slam_maps/intel_icp-slam_app-final.yaml", never);
+    if (!s) GTEST_SKIP() << "no ../shared/data";
+    EXPECT_LT(s->match.timing_ms.at("total"), 100.0);
+}
