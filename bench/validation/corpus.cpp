@@ -146,7 +146,8 @@ Corpus buildCorpus(const CorpusOptions& opts)
     }
     // Real pairs (quick: four small ones, one of each kind of truth but keypoints).
     const std::vector<std::string> quick_pairs = {"gh25_vs_icp_slam", "house_6ccdcaa_vs_2333d24",
-                                                  "gazebo_gmapping", "floorplan_office_a_furnished"};
+                                                  "gazebo_gmapping",
+                                                  "floorplan_office_a_furnished"};
     for (std::size_t p = 0; p < corpus.real_pairs.size(); ++p)
     {
         const RealPair& rp = corpus.real_pairs[p];

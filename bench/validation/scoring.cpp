@@ -75,10 +75,24 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                 break;
             }
     }
+    std::map<int, int> true_per_part;
     for (const auto& p : report.match.pairs)
     {
         ++s.matched;
-        s.true_pairs += isTrue(p.ground_truth, p.map) ? 1 : 0;
+        if (!isTrue(p.ground_truth, p.map)) continue;
+        ++s.true_pairs;
+        if (truth.part_of)
+            ++true_per_part[truth.part_of(
+                map.vertices[static_cast<std::size_t>(p.map)].position_m)];
+    }
+    if (truth.part_of && truth.injected_breaks >= 0)
+    {
+        s.parts_with_3_pairs = s.parts_with_5_pairs = 0;
+        for (const auto& [part, n] : true_per_part)
+        {
+            s.parts_with_3_pairs += (part >= 0 && n >= 3) ? 1 : 0;
+            s.parts_with_5_pairs += (part >= 0 && n >= 5) ? 1 : 0;
+        }
     }
     s.precision = s.matched ? static_cast<double>(s.true_pairs) / s.matched : nan;
     s.recall = s.gt_with_counterpart

@@ -39,6 +39,9 @@ struct CaseScore
     double recall = 0.0;     //!< true / gt_with_counterpart (NaN when there is no counterpart).
     int brokenness_found = 0;
     int brokenness_injected = -1;
+    /** Broken maps: parts with at least 3 and at least 5 true pairs (how many groups a
+     * brokenness measure could find from this match); -1 when not broken. */
+    int parts_with_3_pairs = -1, parts_with_5_pairs = -1;
     /** Largest |yaw error| of an accepted brokenness group against the part most of its
      * vertices belong to [deg]; NaN when not a broken case or no group. */
     double max_group_rotation_error_deg = 0.0;

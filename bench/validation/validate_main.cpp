@@ -33,7 +33,7 @@ namespace
 const char* kUsage =
     "usage: topoeval_validate [--quick] [--out DIR] [--seed N] [--threads N] [--data DIR]\n"
     "                         [--no-real] [--ini FILE] [--pictures N] [--floors FILE]\n"
-    "                         [--only TEXT] [--force]\n"
+    "                         [--only TEXT] [--draw-ground-truths] [--force]\n"
     "  --quick        the CI subset (~40 cases)\n"
     "  --out DIR      where cases.csv, cases.json, summary.txt, pictures/ go\n"
     "                 (default topoeval-out/validation; an existing cases.csv needs --force)\n"
@@ -46,6 +46,7 @@ const char* kUsage =
     "  --floors FILE  minimum figures; exit 3 when one is not met "
     "(bench/validation/quick_floors.txt)\n"
     "  --only TEXT    only cases whose id contains TEXT\n"
+    "  --draw-ground-truths  draw every ground truth's graph into pictures/gt_NAME.png\n"
     "Exit codes: 0 done, 2 bad arguments or input, 3 a floor or the truth check failed, 1 other.\n";
 
 struct Options
@@ -55,6 +56,7 @@ struct Options
     int threads = 0;
     std::string ini, floors, only;
     int pictures = 0;
+    bool draw_ground_truths = false;
     bool force = false;
 };
 
@@ -101,6 +103,8 @@ Options parse(int argc, char** argv)
             o.only = need(i);
         else if (a == "--force")
             o.force = true;
+        else if (a == "--draw-ground-truths")
+            o.draw_ground_truths = true;
         else if (a == "--help" || a == "-h")
         {
             std::cout << kUsage;
@@ -145,7 +149,8 @@ std::string casesCsv(const std::vector<CaseResult>& results)
     o << "id,building,family,source,kind,ladder,severity,param,truth_source,truth_cells,"
          "truth_on_wall,truth_share,wall_tolerance_m,gt_vertices,map_vertices,gt_with_counterpart,"
          "matched,true_pairs,precision,recall,coverage,quality,relative_rmse_m,"
-         "brokenness_injected,brokenness_found,max_group_rotation_error_deg,error,time_ms\n";
+         "brokenness_injected,brokenness_found,parts_with_3_pairs,parts_with_5_pairs,"
+         "max_group_rotation_error_deg,error,time_ms\n";
     for (const auto& r : results)
     {
         const auto& s = r.score;
@@ -158,7 +163,8 @@ std::string casesCsv(const std::vector<CaseResult>& results)
           << s.matched << ',' << s.true_pairs << ',' << numText(s.precision) << ','
           << numText(s.recall) << ',' << numText(s.coverage) << ',' << numText(s.quality) << ','
           << numText(s.relative_rmse_m) << ',' << s.brokenness_injected << ',' << s.brokenness_found
-          << ',' << numText(s.max_group_rotation_error_deg, 2) << ',' << csvField(r.error) << ','
+          << ',' << s.parts_with_3_pairs << ',' << s.parts_with_5_pairs << ','
+          << numText(s.max_group_rotation_error_deg, 2) << ',' << csvField(r.error) << ','
           << numText(r.time_ms, 1) << '\n';
     }
     return o.str();
@@ -247,6 +253,8 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("relative_rmse_m").value(s.relative_rmse_m, 4);
         j.key("brokenness_injected").value(s.brokenness_injected);
         j.key("brokenness_found").value(s.brokenness_found);
+        j.key("parts_with_3_pairs").value(s.parts_with_3_pairs);
+        j.key("parts_with_5_pairs").value(s.parts_with_5_pairs);
         j.key("max_group_rotation_error_deg").value(s.max_group_rotation_error_deg, 2);
         j.key("error").value(r.error);
         j.key("time_ms").value(r.time_ms, 1);
@@ -367,6 +375,20 @@ int main(int argc, char** argv)
             gt_graphs.size(), threads,
             [&](std::size_t i)
             { gt_graphs[i] = buildTopologyGraph(corpus.ground_truths[i].grid, params.graph); });
+
+        if (opt.draw_ground_truths)
+        {
+            fs::create_directories(fs::path(opt.out) / "pictures");
+            for (std::size_t i = 0; i < gt_graphs.size(); ++i)
+            {
+                DrawOptions d;
+                d.scale = 1;
+                const fs::path png = fs::path(opt.out) / "pictures" /
+                                     ("gt_" + safeName(corpus.ground_truths[i].name) + ".png");
+                drawTopologyGraph(corpus.ground_truths[i].grid, gt_graphs[i], d)
+                    .saveToFile(png.string());
+            }
+        }
 
         std::vector<CaseResult> results(corpus.cases.size());
         std::atomic<std::size_t> done{0};

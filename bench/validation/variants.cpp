@@ -470,66 +470,120 @@ Variant makeBroken(const COccupancyGridMap2D& gt, int breaks, std::uint32_t seed
 {
     std::mt19937 rng(seed);
     const double dir = uniform(rng, 0, M_PI);
-    const Eigen::Vector2d u(std::cos(dir), std::sin(dir));
+    const Eigen::Vector2d u(std::cos(dir), std::sin(dir)), w(-u.y(), u.x());
     const int sx = static_cast<int>(gt.getSizeX()), sy = static_cast<int>(gt.getSizeY());
     const double res = gt.getResolution();
     const auto src = cellsOf(gt);
-    std::vector<double> proj;
+    auto known = [&](std::size_t i) { return !(std::abs(src[i] - 0.5f) < 0.1f); };
+    auto centre = [&](int x, int y) { return Eigen::Vector2d(gt.idx2x(x), gt.idx2y(y)); };
+    std::vector<double> along;
     for (int y = 0; y < sy; ++y)
         for (int x = 0; x < sx; ++x)
-            if (!(std::abs(src[static_cast<std::size_t>(y) * sx + x] - 0.5f) < 0.1f))
-                proj.push_back(u.dot(Eigen::Vector2d(gt.idx2x(x), gt.idx2y(y))));
-    if (proj.empty() || breaks < 1) return makeIdentical(gt);
-    std::sort(proj.begin(), proj.end());
-    std::vector<double> cuts;
-    for (int i = 1; i <= breaks; ++i)
+            if (known(static_cast<std::size_t>(y) * sx + x)) along.push_back(u.dot(centre(x, y)));
+    if (along.empty() || breaks < 1 || breaks > 3) return makeIdentical(gt);
+    auto quantile = [](std::vector<double> v, double q)
     {
-        const double q = static_cast<double>(i) / (breaks + 1);
-        cuts.push_back(proj[static_cast<std::size_t>(q * (proj.size() - 1))]);
-    }
-    // Pivots: free cells on each cut, preferring open space (a point on the robot's way).
-    const cv::Mat clear = distanceTo(src, sx, sy, notFree);
-    std::vector<Eigen::Vector2d> pivots;
-    for (double c : cuts)
+        std::sort(v.begin(), v.end());
+        return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
+    };
+    // Compact parts of equal known area: halves across u (1 break); a third, then the rest
+    // halved across w (2 breaks); halves, each halved across w (3 breaks: quadrants).
+    const double big = std::numeric_limits<double>::max();
+    struct Box
     {
-        std::vector<Eigen::Vector2d> open, any;
+        double s0, s1, t0, t1;  // along u and along w
+    };
+    std::vector<Box> boxes;
+    auto medianAcross = [&](double s0, double s1)
+    {
+        std::vector<double> t;
         for (int y = 0; y < sy; ++y)
             for (int x = 0; x < sx; ++x)
             {
-                if (!freeCell(src[static_cast<std::size_t>(y) * sx + x])) continue;
-                const Eigen::Vector2d p(gt.idx2x(x), gt.idx2y(y));
-                if (std::abs(u.dot(p) - c) > 0.75 * res) continue;
-                any.push_back(p);
-                if (clear.at<float>(y, x) * res >= 0.4) open.push_back(p);
+                if (!known(static_cast<std::size_t>(y) * sx + x)) continue;
+                const double si = u.dot(centre(x, y));
+                if (si >= s0 && si < s1) t.push_back(w.dot(centre(x, y)));
             }
-        const auto& from = open.empty() ? any : open;
-        if (from.empty())
-            pivots.push_back(c * u);
-        else
-            pivots.push_back(
-                from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)]);
+        return t.empty() ? 0.0 : quantile(t, 0.5);
+    };
+    if (breaks == 1)
+    {
+        const double c = quantile(along, 0.5);
+        boxes = {{-big, c, -big, big}, {c, big, -big, big}};
+    }
+    else if (breaks == 2)
+    {
+        const double c = quantile(along, 1.0 / 3.0), m = medianAcross(c, big);
+        boxes = {{-big, c, -big, big}, {c, big, -big, m}, {c, big, m, big}};
+    }
+    else
+    {
+        const double c = quantile(along, 0.5), m0 = medianAcross(-big, c),
+                     m1 = medianAcross(c, big);
+        boxes = {{-big, c, -big, m0}, {-big, c, m0, big}, {c, big, -big, m1}, {c, big, m1, big}};
+    }
+    auto partOf = [&](const Eigen::Vector2d& p)
+    {
+        const double s = u.dot(p), t = w.dot(p);
+        for (std::size_t j = 0; j < boxes.size(); ++j)
+            if (s >= boxes[j].s0 && s < boxes[j].s1 && t >= boxes[j].t0 && t < boxes[j].t1)
+                return static_cast<int>(j);
+        return -1;
+    };
+    // Pivots: for each turned part, a free cell of open space (a point on the robot's way) on
+    // its border with another part.
+    const cv::Mat clear = distanceTo(src, sx, sy, notFree);
+    const int reach = std::max(1, static_cast<int>(std::lround(0.1 / res)));
+    std::vector<std::vector<Eigen::Vector2d>> open(boxes.size()), any(boxes.size());
+    for (int y = reach; y < sy - reach; ++y)
+        for (int x = reach; x < sx - reach; ++x)
+        {
+            if (!freeCell(src[static_cast<std::size_t>(y) * sx + x])) continue;
+            const int j = partOf(centre(x, y));
+            bool border = false;
+            for (int d = 0; d < 4 && !border; ++d)
+            {
+                const int xx = x + (d == 0 ? reach : d == 1 ? -reach : 0);
+                const int yy = y + (d == 2 ? reach : d == 3 ? -reach : 0);
+                border = partOf(centre(xx, yy)) != j;
+            }
+            if (!border || j < 0) continue;
+            any[static_cast<std::size_t>(j)].push_back(centre(x, y));
+            if (clear.at<float>(y, x) * res >= 0.4)
+                open[static_cast<std::size_t>(j)].push_back(centre(x, y));
+        }
+    // Yaws: part 0 stays; the others turn 10-30 degrees either way, at least 10 degrees apart
+    // from every other part, so each part is a separate brokenness group.
+    std::vector<double> yaw(boxes.size(), 0.0);
+    for (int attempt = 0; attempt < 200; ++attempt)
+    {
+        for (std::size_t j = 1; j < yaw.size(); ++j)
+            yaw[j] = (uniform(rng, 0, 1) < 0.5 ? -1.0 : 1.0) * uniform(rng, 10.0, 30.0);
+        bool apart = true;
+        for (std::size_t i = 0; i < yaw.size(); ++i)
+            for (std::size_t j = i + 1; j < yaw.size(); ++j)
+                apart = apart && std::abs(yaw[i] - yaw[j]) >= 10.0;
+        if (apart) break;
     }
     const Rigid2D global = randomRigid(seed ^ 0x9e3779b9u, 10.0);
     std::vector<WarpPart> parts;
-    Rigid2D chain;  // R_1 o ... o R_j
-    for (int j = 0; j <= breaks; ++j)
+    for (std::size_t j = 0; j < boxes.size(); ++j)
     {
+        Rigid2D r;
         if (j > 0)
         {
-            const double delta =
-                (uniform(rng, 0, 1) < 0.5 ? -1.0 : 1.0) * uniform(rng, 10.0, 30.0) * kDeg;
-            Rigid2D r;
-            r.yaw_rad = delta;
-            const Eigen::Vector2d& c = pivots[static_cast<std::size_t>(j - 1)];
-            r.t_m = c - Eigen::Rotation2Dd(delta) * c;
-            chain = chain.compose(r);
+            const auto& from = open[j].empty() ? any[j] : open[j];
+            Eigen::Vector2d c = Eigen::Vector2d::Zero();
+            if (!from.empty())
+                c = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
+            r.yaw_rad = yaw[j] * kDeg;
+            r.t_m = c - Eigen::Rotation2Dd(r.yaw_rad) * c;
         }
-        const double lo = j == 0 ? -std::numeric_limits<double>::max() : cuts[j - 1];
-        const double hi = j == breaks ? std::numeric_limits<double>::max() : cuts[j];
-        parts.push_back({global.compose(chain), [u, lo, hi](const Eigen::Vector2d& p)
+        const Box box = boxes[j];
+        parts.push_back({global.compose(r), [u, w, box](const Eigen::Vector2d& p)
                          {
-                             const double s = u.dot(p);
-                             return s >= lo && s < hi;
+                             const double s = u.dot(p), t = w.dot(p);
+                             return s >= box.s0 && s < box.s1 && t >= box.t0 && t < box.t1;
                          }});
     }
     Variant v = warpGrid(gt, parts);

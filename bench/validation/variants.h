@@ -67,11 +67,12 @@ Variant makeRagged(const mrpt::maps::COccupancyGridMap2D& gt, int amplitude_cell
  * side of the building; the rest is not in the map at all (a partial exploration). */
 Variant makeCrop(const mrpt::maps::COccupancyGridMap2D& gt, double keep_share, std::uint32_t seed);
 
-/** Broken `breaks` times (paper IV, brokenness), like a SLAM run that turned wrong at
- * `breaks` places: the building is cut into breaks + 1 slabs of equal known area across a
- * seeded direction; slab j is turned by a further 10-30 degrees (seeded sign) about a pivot
- * on free space of its cut with slab j - 1, so each part is >= 1 / (breaks + 1) of the building.
- * The whole map is then moved rigidly by a seeded yaw and shift. part_yaw_deg per slab. */
+/** Broken `breaks` times (paper IV, brokenness; 1-3), like a SLAM run that turned wrong in
+ * `breaks` places: the building is cut into breaks + 1 compact parts of equal known area
+ * (halves; a third and two sixths; quadrants, across a seeded direction); part 0 stays, each
+ * other part is turned 10-30 degrees (seeded sign, at least 10 degrees from every other part)
+ * about a pivot on free space of its border. The whole map is then moved rigidly by a seeded
+ * yaw and shift. part_yaw_deg per part. */
 Variant makeBroken(const mrpt::maps::COccupancyGridMap2D& gt, int breaks, std::uint32_t seed);
 
 /** Furniture: desks, shelves and leg groups of tables and chairs placed in free space with at
