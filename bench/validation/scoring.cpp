@@ -7,6 +7,8 @@
 #include <map>
 #include <opencv2/imgproc.hpp>
 
+#include "internal/horn.h"
+
 namespace mrpt_topoeval::validation
 {
 TruthCheck checkTruth(const mrpt::maps::COccupancyGridMap2D& gt,
@@ -43,6 +45,28 @@ TruthCheck checkTruth(const mrpt::maps::COccupancyGridMap2D& gt,
             if (dist.at<float>(cy, cx) * res <= truth.wall_tolerance_m + 1e-9) ++check.on_wall;
         }
     return check;
+}
+
+double mapDistortion(const mrpt::maps::COccupancyGridMap2D& map, const Truth& truth, int stride)
+{
+    if (truth.different_building || !truth.mapping) return std::numeric_limits<double>::quiet_NaN();
+    std::vector<Eigen::Vector2d> gt_pts, map_pts;
+    const int mx = static_cast<int>(map.getSizeX()), my = static_cast<int>(map.getSizeY());
+    for (int y = 0; y < my; y += stride)
+        for (int x = 0; x < mx; x += stride)
+        {
+            if (!(map.getCell(x, y) < 0.35f)) continue;
+            const Eigen::Vector2d p(map.idx2x(x), map.idx2y(y));
+            if (truth.is_clutter && truth.is_clutter(p)) continue;
+            const auto q = truth.mapping(p);
+            if (!q) continue;
+            map_pts.push_back(p);
+            gt_pts.push_back(*q);
+        }
+    if (gt_pts.size() < 3) return std::numeric_limits<double>::quiet_NaN();
+    double mse = 0.0;
+    internal::hornAlign(gt_pts, map_pts, &mse);
+    return std::sqrt(mse);
 }
 
 double CaseScore::pairTolerance(const TopoVertex& g) { return std::max(0.5, 0.5 * g.clearance_m); }

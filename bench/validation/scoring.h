@@ -27,6 +27,13 @@ struct TruthCheck
 TruthCheck checkTruth(const mrpt::maps::COccupancyGridMap2D& gt,
                       const mrpt::maps::COccupancyGridMap2D& map, const Truth& truth);
 
+/** How far the map is from a rigid copy of the ground truth [m]: the RMS distance between its
+ * occupied cells mapped by the truth and the same cells moved by the one rigid transform that
+ * fits them best (Horn). 0 for moved, resampled and noisy maps; the SLAM maps' real error;
+ * NaN for a different building. Every `stride`-th cell in x and y. */
+double mapDistortion(const mrpt::maps::COccupancyGridMap2D& map, const Truth& truth,
+                     int stride = 3);
+
 /** The figures of one case. Counts are of non-spurious vertices. */
 struct CaseScore
 {

@@ -169,7 +169,10 @@ Summary summarize(const std::vector<CaseResult>& results)
         {
             if (l == "slam" && r.spec.source != "generated") continue;
             auto& pts = ladders[{r.spec.family, l}];
-            pts.first.push_back(-static_cast<double>(r.spec.severity));
+            const double severity = l == "slam"
+                                        ? (std::isfinite(r.distortion_m) ? r.distortion_m : 0.0)
+                                        : static_cast<double>(r.spec.severity);
+            pts.first.push_back(-severity);
             pts.second.push_back(r.score.quality);
         }
     }

@@ -19,6 +19,7 @@ struct CaseResult
     TruthCheck truth_check;
     double wall_tolerance_m = 0.0;
     CaseScore score;
+    double distortion_m = 0.0;  //!< mapDistortion() of the case's map.
     double time_ms = 0.0;  //!< evaluate() on the case (graph of the map, match, scores).
     std::string error;     //!< Non-empty when the case threw.
 };
@@ -48,7 +49,10 @@ struct FamilyLadder
 {
     std::string family, ladder;
     std::size_t points = 0;
-    double spearman = 0.0;  //!< Of -severity vs quality: 1 = quality falls as damage grows.
+    /** Of -severity vs quality: 1 = quality falls as damage grows. Severity on the breaks
+     * ladder is the number of breaks; on the slam ladder the map's measured distortion (the
+     * noise level does not order the maps' real error: ICP undoes much of it). */
+    double spearman = 0.0;
 };
 
 struct Summary

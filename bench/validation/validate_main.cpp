@@ -147,7 +147,8 @@ std::string casesCsv(const std::vector<CaseResult>& results)
 {
     std::ostringstream o;
     o << "id,building,family,source,kind,ladder,severity,param,truth_source,truth_cells,"
-         "truth_on_wall,truth_share,wall_tolerance_m,gt_vertices,map_vertices,gt_with_counterpart,"
+         "truth_on_wall,truth_share,wall_tolerance_m,distortion_m,gt_vertices,map_vertices,gt_with_"
+         "counterpart,"
          "matched,true_pairs,precision,recall,coverage,quality,relative_rmse_m,"
          "brokenness_injected,brokenness_found,parts_with_3_pairs,parts_with_5_pairs,"
          "max_group_rotation_error_deg,error,time_ms\n";
@@ -159,12 +160,12 @@ std::string casesCsv(const std::vector<CaseResult>& results)
           << r.spec.ladder << ',' << r.spec.severity << ',' << numText(r.spec.param) << ','
           << csvField(r.truth_source) << ',' << r.truth_check.cells << ',' << r.truth_check.on_wall
           << ',' << numText(r.truth_check.share()) << ',' << numText(r.wall_tolerance_m, 3) << ','
-          << s.gt_vertices << ',' << s.map_vertices << ',' << s.gt_with_counterpart << ','
-          << s.matched << ',' << s.true_pairs << ',' << numText(s.precision) << ','
-          << numText(s.recall) << ',' << numText(s.coverage) << ',' << numText(s.quality) << ','
-          << numText(s.relative_rmse_m) << ',' << s.brokenness_injected << ',' << s.brokenness_found
-          << ',' << s.parts_with_3_pairs << ',' << s.parts_with_5_pairs << ','
-          << numText(s.max_group_rotation_error_deg, 2) << ',' << csvField(r.error) << ','
+          << numText(r.distortion_m, 4) << ',' << s.gt_vertices << ',' << s.map_vertices << ','
+          << s.gt_with_counterpart << ',' << s.matched << ',' << s.true_pairs << ','
+          << numText(s.precision) << ',' << numText(s.recall) << ',' << numText(s.coverage) << ','
+          << numText(s.quality) << ',' << numText(s.relative_rmse_m) << ',' << s.brokenness_injected
+          << ',' << s.brokenness_found << ',' << s.parts_with_3_pairs << ',' << s.parts_with_5_pairs
+          << ',' << numText(s.max_group_rotation_error_deg, 2) << ',' << csvField(r.error) << ','
           << numText(r.time_ms, 1) << '\n';
     }
     return o.str();
@@ -241,6 +242,7 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("share").value(r.truth_check.share(), 4);
         j.key("wall_tolerance_m").value(r.wall_tolerance_m, 3);
         j.endObject();
+        j.key("distortion_m").value(r.distortion_m, 4);
         j.key("gt_vertices").value(static_cast<std::uint64_t>(s.gt_vertices));
         j.key("map_vertices").value(static_cast<std::uint64_t>(s.map_vertices));
         j.key("gt_with_counterpart").value(static_cast<std::uint64_t>(s.gt_with_counterpart));
@@ -299,6 +301,7 @@ CaseResult runCase(const Corpus& corpus, const CaseSpec& spec, const TopologyGra
         r.truth_source = v.truth.source;
         r.wall_tolerance_m = v.truth.wall_tolerance_m;
         r.truth_check = checkTruth(gt_grid, v.map, v.truth);
+        r.distortion_m = mapDistortion(v.map, v.truth);
         TopologyGraph gt_graph =
             gt_graph_in ? *gt_graph_in : buildTopologyGraph(gt_grid, params.graph);
         TopologyGraph map_graph;

@@ -25,6 +25,16 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     double brokenness_max_squared_error_m2 = 0.2;
     /** Groups smaller than this are not counted (paper: MinNumberVertices = 5) [1]. */
     int brokenness_min_vertices = 5;
+    /** A pair's position error up to this share of its vertices' clearance (the larger of the
+     * two) is vertex jitter, not map error: a vertex in a room sits on the medial axis, which
+     * slides with furniture, noise and resolution by a fraction of the room's half width.
+     * Relative accuracy and local consistency count only the error beyond it. 0 = the paper's
+     * plain errors [ratio]. */
+    double vertex_slack_share = 0.25;
+    /** A pair's error counts at most this much in relative accuracy and local consistency, and
+     * the relative alignment is refitted without pairs beyond it: one wrong pair must not decide
+     * a score. 0 = the paper's plain RMS [m]. */
+    double outlier_distance_m = 1.0;
     /** Accuracy score = 1 / (1 + rmse / this) [m]. */
     double accuracy_scale_m = 0.5;
     /** Consistency score = 1 / (1 + mean error / this) [m]. */

@@ -29,6 +29,8 @@ void QualityParameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
     MRPT_LOAD_CONFIG_VAR(consistency_medium_max_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(brokenness_max_squared_error_m2, double, c, s);
     MRPT_LOAD_CONFIG_VAR(brokenness_min_vertices, int, c, s);
+    MRPT_LOAD_CONFIG_VAR(vertex_slack_share, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(outlier_distance_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(accuracy_scale_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(consistency_scale_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(weight_coverage, double, c, s);
@@ -47,6 +49,12 @@ void QualityParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                  "[m^2] a brokenness group's largest mean squared error");
     MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_min_vertices,
                                  "[1] smallest brokenness group counted (paper: 5)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        vertex_slack_share,
+        "[ratio] pair error up to this share of the vertices' clearance is jitter (0 = paper)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        outlier_distance_m,
+        "[m] a pair's error counts at most this much in accuracy and consistency (0 = paper)");
     MRPT_SAVE_CONFIG_VAR_COMMENT(accuracy_scale_m, "[m] accuracy score = 1 / (1 + rmse / this)");
     MRPT_SAVE_CONFIG_VAR_COMMENT(consistency_scale_m,
                                  "[m] consistency score = 1 / (1 + mean error / this)");
@@ -72,6 +80,11 @@ void QualityParameters::validate() const
                       "brokenness_max_squared_error_m2 > 0");
     internal::require(brokenness_min_vertices >= 2, "brokenness_min_vertices",
                       brokenness_min_vertices, "brokenness_min_vertices >= 2");
+    internal::require(std::isfinite(vertex_slack_share) && vertex_slack_share >= 0.0 &&
+                          vertex_slack_share <= 1.0,
+                      "vertex_slack_share", vertex_slack_share, "0 <= vertex_slack_share <= 1");
+    internal::require(internal::isNonNegative(outlier_distance_m), "outlier_distance_m",
+                      outlier_distance_m, "outlier_distance_m >= 0");
     internal::require(internal::isPositive(accuracy_scale_m), "accuracy_scale_m", accuracy_scale_m,
                       "accuracy_scale_m > 0");
     internal::require(internal::isPositive(consistency_scale_m), "consistency_scale_m",
@@ -120,9 +133,25 @@ std::vector<double> graphDistances(const TopologyGraph& g, int src)
     return d;
 }
 
+// The jitter a pair's position error may have without being map error (vertex_slack_share).
+double pairSlack(const TopologyGraph& gt, const TopologyGraph& map, const VertexPair& pr,
+                 const QualityParameters& p)
+{
+    return p.vertex_slack_share * std::max(gt.vertices[pr.ground_truth].clearance_m,
+                                           map.vertices[pr.map].clearance_m);
+}
+
+// An error as the robust scores count it: beyond the slack, at most outlier_distance_m.
+double countedError(double error, double slack, const QualityParameters& p)
+{
+    const double e = std::max(0.0, error - slack);
+    return p.outlier_distance_m > 0.0 ? std::min(e, p.outlier_distance_m) : e;
+}
+
 // Paper IV, local consistency: all pairs of matched ground-truth vertices, grouped by their
 // shortest graph distance; in each class the mean difference between the pair's geometric
-// distance in the ground truth and in the map.
+// distance in the ground truth and in the map (beyond the pairs' slack, clipped at the outlier
+// distance: doc/quality.md).
 std::vector<ConsistencyClass> localConsistency(const TopologyGraph& gt, const TopologyGraph& map,
                                                const GraphMatch& m, const QualityParameters& p)
 {
@@ -147,7 +176,10 @@ std::vector<ConsistencyClass> localConsistency(const TopologyGraph& gt, const To
                                   : dg < p.consistency_medium_max_m ? cls[1]
                                                                     : cls[2];
             ++c.pairs;
-            c.mean_error_m += std::abs(d_gt - d_map);
+            c.mean_error_m += countedError(std::abs(d_gt - d_map),
+                                           pairSlack(gt, map, m.pairs[i], p) +
+                                               pairSlack(gt, map, m.pairs[j], p),
+                                           p);
         }
     }
     for (auto& c : cls)
@@ -421,11 +453,32 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     r.global_accuracy.pairs = pg.size();
     r.global_accuracy.rmse_m = std::sqrt(sum / double(pg.size()));
     r.global_accuracy.score = invScore(r.global_accuracy.rmse_m, p.accuracy_scale_m);
-    // Relative accuracy: after the best rigid alignment (Horn).
-    double mse = 0.0;
+    // Relative accuracy: after the best rigid alignment (Horn), refitted without the pairs
+    // beyond the outlier distance; each pair's error counted beyond its slack and at most the
+    // outlier distance (doc/quality.md), so one wrong pair does not decide the score.
+    Transform2D t = internal::hornAlign(pg, pm);
+    for (int round = 0; round < 3 && p.outlier_distance_m > 0.0; ++round)
+    {
+        std::vector<Eigen::Vector2d> ig, im;
+        for (std::size_t i = 0; i < pg.size(); ++i)
+            if ((pg[i] - t.apply(pm[i])).norm() <= p.outlier_distance_m)
+            {
+                ig.push_back(pg[i]);
+                im.push_back(pm[i]);
+            }
+        if (ig.size() < 3 || ig.size() == pg.size()) break;
+        t = internal::hornAlign(ig, im);
+    }
+    double sq = 0.0;
+    for (std::size_t i = 0; i < pg.size(); ++i)
+    {
+        const double e = countedError((pg[i] - t.apply(pm[i])).norm(),
+                                      pairSlack(ground_truth, map, match.pairs[i], p), p);
+        sq += e * e;
+    }
     r.relative_accuracy.pairs = pg.size();
-    r.relative_accuracy.transform = internal::hornAlign(pg, pm, &mse);
-    r.relative_accuracy.rmse_m = std::sqrt(mse);
+    r.relative_accuracy.transform = t;
+    r.relative_accuracy.rmse_m = std::sqrt(sq / double(pg.size()));
     r.relative_accuracy.score = invScore(r.relative_accuracy.rmse_m, p.accuracy_scale_m);
 
     r.brokenness = brokenness(ground_truth, map, gt_view, match, p);
