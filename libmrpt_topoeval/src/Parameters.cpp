@@ -356,7 +356,7 @@ void Parameters::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::s
             "[probability] plain images: a pixel is free if (255-grey)/255 < this");
     c.write(ml, "grey_between_thresholds", map_load.grey_between_thresholds, np, vp,
             "[auto|unknown|probability] images without a ROS mode: pixels between the "
-            "thresholds are unknown, or keep their probability (auto: when >16 such greys)");
+            "thresholds are unknown, or keep their probability (auto: when >4 such greys)");
     c.write(ml, "max_cells", map_load.max_cells, np, vp,
             "[cells] largest map accepted (width x height), checked before decoding");
 

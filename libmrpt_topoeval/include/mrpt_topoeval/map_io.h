@@ -19,8 +19,8 @@ struct MapLoadOptions
     double free_thresh = 0.196;
     /** Pixels between the thresholds of an image without an explicit ROS `mode` (ROS
      * trinary: unknown). "auto" (default): keep their probability when the image holds more
-     * than 16 distinct grey levels between the thresholds, as probabilistic renderings do
-     * (MRPT's: unknown is 127, a cell seen free once or twice is 150-200 grey, below ROS's
+     * than 4 distinct grey levels between the thresholds, as probabilistic renderings do
+     * (MRPT's: unknown is 127, a cell seen free a few times is 150-200 grey, below ROS's
      * free_thresh 0.196), so that the [GraphBuilder] thresholds classify them; else unknown,
      * as in a ROS trinary image (one unknown grey, 205). "unknown" or "probability" force
      * one reading. */

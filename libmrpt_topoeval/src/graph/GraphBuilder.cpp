@@ -186,8 +186,8 @@ void closeObstacleGaps(std::vector<std::uint8_t>& cls, int sx, int sy, double ra
     const cv::Mat disc =
         cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1));
     // Outside the grid counts as not obstacle, so the closing adds nothing along the border.
-    cv::morphologyEx(occ, closed, cv::MORPH_CLOSE, disc, cv::Point(-1, -1), 1,
-                     cv::BORDER_CONSTANT, cv::Scalar(0));
+    cv::morphologyEx(occ, closed, cv::MORPH_CLOSE, disc, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT,
+                     cv::Scalar(0));
     c.setTo(kOccupied, closed);
 }
 

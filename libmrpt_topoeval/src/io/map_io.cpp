@@ -119,8 +119,9 @@ struct PixelRule
 };
 
 /** More distinct grey levels than this between the thresholds: a probabilistic rendering. A
- * ROS trinary image has one (205); an anti-aliased drawing has a few along its lines. */
-constexpr std::size_t kProbabilisticGreyLevels = 16;
+ * ROS trinary image has one (205), a Tango slice one (127); MRPT quantises log-odds to int8,
+ * so its renderings have about 10 (the Radish reference maps: 11). */
+constexpr std::size_t kProbabilisticGreyLevels = 4;
 
 /** The rule for an image without an explicit ROS mode, from MapLoadOptions. */
 void applyGreyOption(PixelRule& rule, const MapLoadOptions& opts, const std::string& path)
@@ -131,8 +132,8 @@ void applyGreyOption(PixelRule& rule, const MapLoadOptions& opts, const std::str
     else if (g == "probability")
         rule.mode = PixelMode::Scale;
     else if (g != "unknown")
-        fail(path, "option grey_between_thresholds = '" + g +
-                       "' must be auto, unknown or probability");
+        fail(path,
+             "option grey_between_thresholds = '" + g + "' must be auto, unknown or probability");
 }
 
 /** P(free) of a pixel whose channel average is the fraction `white` of the white level
@@ -266,8 +267,7 @@ private:
  * lower-left pixel corner at (x0, y0). `prefix` starts every message. */
 void imageToGrid(const std::string& image_path, const internal::ImageHeader& hdr,
                  const PixelRule& rule_in, double res, double x0, double y0,
-                 COccupancyGridMap2D& grid,
-                 const std::string& prefix)
+                 COccupancyGridMap2D& grid, const std::string& prefix)
 {
     // IMREAD_UNCHANGED keeps 16-bit samples and does not apply EXIF rotation (a map's pixel
     // layout is its geometry); alpha is dropped below, as ROS map_server ignores it.
