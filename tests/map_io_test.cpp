@@ -702,10 +702,10 @@ struct RealMap
     int occupied, free_cells;
 };
 
-void expectRealMap(const std::string& path, const RealMap& r)
+void expectRealMap(const std::string& path, const RealMap& r, const MapLoadOptions& opts = {})
 {
     SCOPED_TRACE(path);
-    const COccupancyGridMap2D g = loadMap(path).grid;
+    const COccupancyGridMap2D g = loadMap(path, opts).grid;
     EXPECT_EQ(g.getSizeX(), r.w);
     EXPECT_EQ(g.getSizeY(), r.h);
     EXPECT_NEAR(g.getXMin(), r.x_min, 1e-3);
@@ -741,7 +741,22 @@ TEST(MapIoRealData, SharedMapsLoadWithMeasuredSizes)
         }
     if (const auto p = sharedDataFile("radish/intel-corrected_ref.yaml"))
     {
-        expectRealMap(*p, {"", 1000, 820, -26.0f, -26.0f, 13099, 167707});
+        // An MRPT rendering: 11 grey levels between the YAML's thresholds. Read as ROS
+        // trinary, they are unknown; by default (auto) they keep their probability, and the
+        // cells of P(free) 0.65-0.80 (grey 166-204) are free space for the graph builder.
+        MapLoadOptions trinary;
+        trinary.grey_between_thresholds = "unknown";
+        expectRealMap(*p, {"", 1000, 820, -26.0f, -26.0f, 13099, 167707}, trinary);
+        const COccupancyGridMap2D g = loadMap(*p).grid;
+        int between = 0, free_for_graph = 0;
+        for (unsigned y = 0; y < g.getSizeY(); ++y)
+            for (unsigned x = 0; x < g.getSizeX(); ++x)
+            {
+                between += classify(g.getCell(x, y)) == Cls::Other;
+                free_for_graph += g.getCell(x, y) >= 0.65f;
+            }
+        EXPECT_GT(between, 0);
+        EXPECT_GT(free_for_graph, 167707 + 20000);
         any = true;
     }
     if (const auto p = sharedDataFile("slam_maps/intel_icp-slam_keyframes-o2m.gridmap"))

@@ -332,6 +332,8 @@ void Parameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, cons
     map_load.occupied_thresh = readRealStrict(c, ml, "occupied_thresh", map_load.occupied_thresh);
     map_load.free_thresh = readRealStrict(c, ml, "free_thresh", map_load.free_thresh);
     map_load.max_cells = readCountStrict(c, ml, "max_cells", map_load.max_cells);
+    if (c.keyExists(ml, "grey_between_thresholds"))
+        map_load.grey_between_thresholds = trim(c.read_string(ml, "grey_between_thresholds", ""));
 
     graph.loadFromConfigFile(c, s + kGraphBuilderSection);
     similarity.loadFromConfigFile(c, s + kSimilaritySection);
@@ -352,6 +354,9 @@ void Parameters::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::s
             "[probability] plain images: a pixel is occupied if (255-grey)/255 > this");
     c.write(ml, "free_thresh", map_load.free_thresh, np, vp,
             "[probability] plain images: a pixel is free if (255-grey)/255 < this");
+    c.write(ml, "grey_between_thresholds", map_load.grey_between_thresholds, np, vp,
+            "[auto|unknown|probability] images without a ROS mode: pixels between the "
+            "thresholds are unknown, or keep their probability (auto: when >4 such greys)");
     c.write(ml, "max_cells", map_load.max_cells, np, vp,
             "[cells] largest map accepted (width x height), checked before decoding");
 
@@ -380,6 +385,10 @@ void Parameters::validate() const
                          " violates free_thresh < occupied_thresh (" + num(m.occupied_thresh) +
                          ")");
     if (m.max_cells == 0) throw InputError(sec + "max_cells = 0 violates max_cells > 0");
+    if (m.grey_between_thresholds != "auto" && m.grey_between_thresholds != "unknown" &&
+        m.grey_between_thresholds != "probability")
+        throw InputError(sec + "grey_between_thresholds = '" + m.grey_between_thresholds +
+                         "' violates grey_between_thresholds in {auto, unknown, probability}");
 
     auto validateSection = [](const char* section, auto& part)
     {

@@ -24,6 +24,18 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
      * (a morphological closing of the free cells; walls are never changed): the dotted free
      * space of laser fans looks the same at every resolution. 0 disables [m]. */
     double unknown_fill_radius_m = 0.10;
+    /** Gaps in walls up to about twice this wide are closed before the Voronoi diagram (a
+     * morphological closing of the obstacle cells with a disc of this radius): one-cell holes
+     * that rotation, resampling or sensor noise open in a wall neither join its two sides nor
+     * cut it into pieces, and its notches grow no branches. Points with at least this
+     * clearance keep their clearance, so it must stay below `min_clearance_m`. 0 disables [m]. */
+    double wall_gap_close_radius_m = 0.10;
+    /** Free-standing obstacles (8-connected occupied or unknown cells surrounded by free space,
+     * not touching the grid's edge) whose smallest enclosing circle is narrower than this
+     * become free space: specks of sensor noise, table and chair legs, small furniture, which
+     * otherwise put small loops and dead ends into a room that the same room without them does
+     * not have. Columns narrower than this go too, in every map alike. 0 disables [m]. */
+    double min_island_size_m = 0.25;
     /** Unknown cells next to free space bound it like obstacles: the graph is the skeleton of
      * the known free space, so half-seen areas (laser fans through doors, frontiers) do not
      * grow branches that change with every pass of the robot [bool]. */
@@ -55,6 +67,12 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
     /** Radius of the alpha shape whose longest polygon is the map's outer boundary; vertices
      * outside it are removed (paper: 2.5 m) [m]. 0 disables the cut. */
     double alpha_radius_m = 2.50;
+    /** Connected parts of the graph whose total edge length is at least this are all kept; the
+     * longest part is always kept. The paper keeps only the biggest part, but a map cut into
+     * pieces by a narrow or closed door then loses whole regions, and which piece is biggest
+     * can flip between two maps of one place. A large value keeps only the biggest, as the
+     * paper does [m]. */
+    double min_component_length_m = 5.0;
     /** Vertices joined by an edge shorter than this are merged into one vertex at their mean
      * position (paper II-B, last step) [m]. */
     double join_distance_m = 0.60;
@@ -72,6 +90,7 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
 /** What happened while building, for summaries and benchmarks. */
 struct GraphBuildStats
 {
+    std::size_t islands_removed = 0;     //!< Free-standing obstacles below min_island_size_m.
     std::size_t sites = 0;               //!< Obstacle cells used as Voronoi sites.
     std::size_t voronoi_vertices = 0;    //!< Voronoi vertices inside the grid (after merging).
     std::size_t voronoi_edges = 0;       //!< Voronoi edges inside the grid.
@@ -94,7 +113,8 @@ using GraphBuildObserver = std::function<void(const std::string& step, const Top
 
 /** Builds the Topology Graph of a grid map (paper II-B and II-C): Voronoi diagram of the
  * obstacle cells, clearance filter, degree-2 chains merged into edges, short dead ends pruned,
- * cut to the outer alpha shape, largest connected part, close vertices joined, attributes.
+ * cut to the outer alpha shape, connected parts of a useful size (the paper: the largest
+ * only), close vertices joined, attributes.
  *
  * Deterministic: the same grid and parameters give the same graph, with vertices numbered by
  * position. A map with no obstacles or no free space gives an empty graph and a warning; a

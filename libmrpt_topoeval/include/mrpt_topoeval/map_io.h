@@ -17,6 +17,14 @@ struct MapLoadOptions
     double occupied_thresh = 0.65;
     /** Plain images only: a pixel is free when (255 - grey)/255 < this (ROS default). */
     double free_thresh = 0.196;
+    /** Pixels between the thresholds of an image without an explicit ROS `mode` (ROS
+     * trinary: unknown). "auto" (default): keep their probability when the image holds more
+     * than 4 distinct grey levels between the thresholds, as probabilistic renderings do
+     * (MRPT's: unknown is 127, a cell seen free a few times is 150-200 grey, below ROS's
+     * free_thresh 0.196), so that the [GraphBuilder] thresholds classify them; else unknown,
+     * as in a ROS trinary image (one unknown grey, 205). "unknown" or "probability" force
+     * one reading. */
+    std::string grey_between_thresholds = "auto";
     /** Largest map accepted, in cells (width x height). Image headers are checked against it
      * before any pixel is decoded. Default 10^8 cells (10000 x 10000). */
     std::uint64_t max_cells = 100'000'000ULL;

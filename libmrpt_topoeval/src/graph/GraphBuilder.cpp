@@ -23,6 +23,8 @@ void GraphBuilderParameters::loadFromConfigFile(const mrpt::config::CConfigFileB
 {
     MRPT_LOAD_CONFIG_VAR(occupied_min_prob, double, c, s);
     MRPT_LOAD_CONFIG_VAR(free_max_prob, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(wall_gap_close_radius_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(min_island_size_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(unknown_fill_radius_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(unknown_is_obstacle, bool, c, s);
     MRPT_LOAD_CONFIG_VAR(skeleton_on_free_cells_only, bool, c, s);
@@ -33,6 +35,7 @@ void GraphBuilderParameters::loadFromConfigFile(const mrpt::config::CConfigFileB
     MRPT_LOAD_CONFIG_VAR(junction_disc_max_length_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(spurious_dead_end_length_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(alpha_radius_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(min_component_length_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(join_distance_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(edge_direction_distance_m, double, c, s);
 }
@@ -43,6 +46,12 @@ void GraphBuilderParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         occupied_min_prob, "[probability] a cell is an obstacle (Voronoi site) if P(occ) >= this");
     MRPT_SAVE_CONFIG_VAR_COMMENT(free_max_prob, "[probability] a cell is free if P(occ) <= this");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        wall_gap_close_radius_m,
+        "[m] close gaps in walls up to ~2x this (< min_clearance_m); 0 = off");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        min_island_size_m,
+        "[m] free-standing obstacles narrower than this (enclosing circle) become free; 0 = off");
     MRPT_SAVE_CONFIG_VAR_COMMENT(unknown_fill_radius_m,
                                  "[m] fill unknown specks in free space up to ~2x this; 0 = off");
     MRPT_SAVE_CONFIG_VAR_COMMENT(unknown_is_obstacle,
@@ -65,6 +74,9 @@ void GraphBuilderParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                  "[m] mark remaining dead ends shorter than this as spurious");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         alpha_radius_m, "[m] alpha-shape radius of the outer boundary (paper: 2.5); 0 = no cut");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        min_component_length_m,
+        "[m] keep every connected part with at least this much edge length (and the longest)");
     MRPT_SAVE_CONFIG_VAR_COMMENT(join_distance_m,
                                  "[m] merge vertices joined by an edge shorter than this");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
@@ -81,10 +93,16 @@ void GraphBuilderParameters::validate() const
               "occupied_min_prob", occupied_min_prob, "0.5 < occupied_min_prob <= 1");
     requireGB(finite(free_max_prob) && free_max_prob >= 0.0 && free_max_prob < 0.5, "free_max_prob",
               free_max_prob, "0 <= free_max_prob < 0.5");
+    requireGB(finite(wall_gap_close_radius_m) && wall_gap_close_radius_m >= 0.0,
+              "wall_gap_close_radius_m", wall_gap_close_radius_m, "wall_gap_close_radius_m >= 0");
+    requireGB(finite(min_island_size_m) && min_island_size_m >= 0.0, "min_island_size_m",
+              min_island_size_m, "min_island_size_m >= 0");
     requireGB(finite(unknown_fill_radius_m) && unknown_fill_radius_m >= 0.0,
               "unknown_fill_radius_m", unknown_fill_radius_m, "unknown_fill_radius_m >= 0");
     requireGB(finite(min_clearance_m) && min_clearance_m > 0.0, "min_clearance_m", min_clearance_m,
               "min_clearance_m > 0");
+    requireGB(wall_gap_close_radius_m < min_clearance_m, "wall_gap_close_radius_m",
+              wall_gap_close_radius_m, "wall_gap_close_radius_m < min_clearance_m");
     requireGB(finite(prune_dead_end_length_m) && prune_dead_end_length_m >= 0.0,
               "prune_dead_end_length_m", prune_dead_end_length_m, "prune_dead_end_length_m >= 0");
     requireGB(finite(corner_spur_ratio) && corner_spur_ratio >= 0.0, "corner_spur_ratio",
@@ -99,6 +117,8 @@ void GraphBuilderParameters::validate() const
               "spurious_dead_end_length_m >= 0");
     requireGB(finite(alpha_radius_m) && alpha_radius_m >= 0.0, "alpha_radius_m", alpha_radius_m,
               "alpha_radius_m >= 0");
+    requireGB(!std::isnan(min_component_length_m) && min_component_length_m >= 0.0,
+              "min_component_length_m", min_component_length_m, "min_component_length_m >= 0");
     requireGB(finite(join_distance_m) && join_distance_m >= 0.0, "join_distance_m", join_distance_m,
               "join_distance_m >= 0");
     requireGB(finite(edge_direction_distance_m) && edge_direction_distance_m > 0.0,
@@ -153,6 +173,71 @@ void fillUnknownSpecks(std::vector<std::uint8_t>& cls, int sx, int sy, double ra
                      cv::BORDER_CONSTANT, cv::Scalar(0));
     c.setTo(kFree, closed & (c == kUnknown));
 }
+
+// Closing of the obstacle cells with a disc: gaps and notches in walls up to about twice the
+// radius wide become obstacle. Free space is only lost where no disc of the radius fits, so
+// every point with at least that clearance keeps its clearance.
+void closeObstacleGaps(std::vector<std::uint8_t>& cls, int sx, int sy, double radius_cells)
+{
+    const int r = static_cast<int>(std::lround(radius_cells));
+    if (r < 1 || cls.empty()) return;
+    cv::Mat c(sy, sx, CV_8UC1, cls.data());
+    cv::Mat occ = (c == kOccupied), closed;
+    const cv::Mat disc =
+        cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1));
+    // Outside the grid counts as not obstacle, so the closing adds nothing along the border.
+    cv::morphologyEx(occ, closed, cv::MORPH_CLOSE, disc, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT,
+                     cv::Scalar(0));
+    c.setTo(kOccupied, closed);
+}
+
+// Islands: 8-connected components of non-free cells (occupied or unknown) surrounded by free
+// space, not touching the grid's edge, whose smallest enclosing circle (of the cells'
+// squares) is narrower than `min_size_cells`, become free. Returns how many were removed.
+std::size_t removeSmallIslands(std::vector<std::uint8_t>& cls, int sx, int sy,
+                               double min_size_cells)
+{
+    if (min_size_cells <= 0.0 || cls.empty()) return 0;
+    cv::Mat c(sy, sx, CV_8UC1, cls.data());
+    const cv::Mat solid = (c != kFree);
+    cv::Mat labels, boxes, centroids;
+    const int n = cv::connectedComponentsWithStats(solid, labels, boxes, centroids, 8, CV_32S);
+    std::vector<char> remove(static_cast<std::size_t>(n), 0);
+    std::vector<std::vector<cv::Point2f>> cells(static_cast<std::size_t>(n));
+    for (int k = 1; k < n; ++k)
+    {
+        const int x = boxes.at<int>(k, cv::CC_STAT_LEFT), y = boxes.at<int>(k, cv::CC_STAT_TOP);
+        const int w = boxes.at<int>(k, cv::CC_STAT_WIDTH), h = boxes.at<int>(k, cv::CC_STAT_HEIGHT);
+        const bool edge = x == 0 || y == 0 || x + w == sx || y + h == sy;
+        // The enclosing circle is at least as wide as the box's longer side.
+        remove[k] = !edge && std::max(w, h) < min_size_cells;
+    }
+    for (int y = 0; y < sy; ++y)
+    {
+        const int* row = labels.ptr<int>(y);
+        for (int x = 0; x < sx; ++x)
+            if (remove[row[x]]) cells[row[x]].emplace_back(static_cast<float>(x), y);
+    }
+    std::size_t removed = 0;
+    for (int k = 1; k < n; ++k)
+    {
+        if (!remove[k]) continue;
+        cv::Point2f centre;
+        float radius = 0.0f;
+        cv::minEnclosingCircle(cells[k], centre, radius);
+        // Cell centres span the diameter; the cells' squares add about one cell.
+        remove[k] = 2.0 * radius + 1.0 < min_size_cells;
+        removed += remove[k] ? 1 : 0;
+    }
+    for (int y = 0; y < sy; ++y)
+    {
+        const int* row = labels.ptr<int>(y);
+        std::uint8_t* out = c.ptr<std::uint8_t>(y);
+        for (int x = 0; x < sx; ++x)
+            if (remove[row[x]]) out[x] = kFree;
+    }
+    return removed;
+}
 }  // namespace
 
 TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
@@ -194,6 +279,10 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
                 out[cx] = kFree;
         }
     }
+    // Order matters: gaps are closed first, so that a wall cut into short pieces by one-cell
+    // gaps is whole again before small free-standing pieces are judged as islands.
+    closeObstacleGaps(cls, sx, sy, params.wall_gap_close_radius_m / res);
+    stats.islands_removed = removeSmallIslands(cls, sx, sy, params.min_island_size_m / res);
     fillUnknownSpecks(cls, sx, sy, params.unknown_fill_radius_m / res);
     for (auto c : cls)
     {
@@ -310,7 +399,7 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
     timer.lap("alpha_cut");
     snapshot("alpha_cut");
 
-    g.keepLargestComponent();
+    g.keepComponents(params.min_component_length_m / res);
     stats.vertices_after_component = g.numAliveVertices();
     timer.lap("largest_component");
     snapshot("largest_component");

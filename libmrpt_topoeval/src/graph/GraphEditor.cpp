@@ -266,7 +266,7 @@ std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio, d
     return removed;
 }
 
-void GraphEditor::keepLargestComponent()
+void GraphEditor::keepComponents(double min_length)
 {
     const int nv = static_cast<int>(m_v.size());
     std::vector<int> comp(nv, -1);
@@ -316,7 +316,8 @@ void GraphEditor::keepLargestComponent()
             best = c;
     }
     for (int v = 0; v < nv; ++v)
-        if (m_v[v].alive && comp[v] != best) removeVertex(v);
+        if (m_v[v].alive && comp[v] != best && !(scores[comp[v]].length >= min_length))
+            removeVertex(v);
     dissolveDegreeTwo();  // rebuilds the storage from what is alive
 }
 

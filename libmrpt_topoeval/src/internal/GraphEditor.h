@@ -83,8 +83,9 @@ public:
     }
 
     /** Keeps the connected part with the largest total edge length (ties: more vertices, then
-     * the smallest position), removing the rest. */
-    void keepLargestComponent();
+     * the smallest position) and every other part whose total edge length is at least
+     * `min_length`, removing the rest. */
+    void keepComponents(double min_length);
 
     /** Merges the two ends of every non-loop edge shorter than `max_length` (transitively) into
      * one vertex at their mean position; the short edges disappear, longer edges inside a group

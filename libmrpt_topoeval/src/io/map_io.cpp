@@ -113,7 +113,28 @@ struct PixelRule
     double free_thresh = 0.196;
     bool negate = false;
     PixelMode mode = PixelMode::Trinary;
+    /** Trinary without an explicit mode: switch to Scale when the image has many grey levels
+     * between the thresholds (a probabilistic rendering). */
+    bool detect_probabilistic = false;
 };
+
+/** More distinct grey levels than this between the thresholds: a probabilistic rendering. A
+ * ROS trinary image has one (205), a Tango slice one (127); MRPT quantises log-odds to int8,
+ * so its renderings have about 10 (the Radish reference maps: 11). */
+constexpr std::size_t kProbabilisticGreyLevels = 4;
+
+/** The rule for an image without an explicit ROS mode, from MapLoadOptions. */
+void applyGreyOption(PixelRule& rule, const MapLoadOptions& opts, const std::string& path)
+{
+    const std::string& g = opts.grey_between_thresholds;
+    if (g == "auto")
+        rule.detect_probabilistic = true;
+    else if (g == "probability")
+        rule.mode = PixelMode::Scale;
+    else if (g != "unknown")
+        fail(path,
+             "option grey_between_thresholds = '" + g + "' must be auto, unknown or probability");
+}
 
 /** P(free) of a pixel whose channel average is the fraction `white` of the white level
  * (0 = black, 1 = white), following ROS map_server: p_occ = (255 - grey) / 255, or
@@ -245,8 +266,8 @@ private:
 /** Decodes an image file whose header has already been checked, and fills `grid` with it,
  * lower-left pixel corner at (x0, y0). `prefix` starts every message. */
 void imageToGrid(const std::string& image_path, const internal::ImageHeader& hdr,
-                 const PixelRule& rule, double res, double x0, double y0, COccupancyGridMap2D& grid,
-                 const std::string& prefix)
+                 const PixelRule& rule_in, double res, double x0, double y0,
+                 COccupancyGridMap2D& grid, const std::string& prefix)
 {
     // IMREAD_UNCHANGED keeps 16-bit samples and does not apply EXIF rotation (a map's pixel
     // layout is its geometry); alpha is dropped below, as ROS map_server ignores it.
@@ -287,6 +308,31 @@ void imageToGrid(const std::string& image_path, const internal::ImageHeader& hdr
     const std::size_t n_sums = static_cast<std::size_t>(used) * white + 1;
     std::vector<CellType> lut(n_sums);
     const double denom = static_cast<double>(used) * white;
+    PixelRule rule = rule_in;
+    if (rule.detect_probabilistic && rule.mode == PixelMode::Trinary)
+    {
+        // Distinct channel sums whose probability lies between the thresholds.
+        std::vector<char> seen(n_sums, 0);
+        for (int y = 0; y < img.rows; ++y)
+            for (int x = 0; x < img.cols; ++x)
+            {
+                std::size_t sum = 0;
+                for (int c = 0; c < used; ++c)
+                    sum += img.depth() == CV_8U
+                               ? img.ptr<std::uint8_t>(y)[static_cast<std::size_t>(x) * ch + c]
+                               : img.ptr<std::uint16_t>(y)[static_cast<std::size_t>(x) * ch + c];
+                seen[sum] = 1;
+            }
+        std::size_t between = 0;
+        PixelRule scale = rule;
+        scale.mode = PixelMode::Scale;
+        for (std::size_t s = 0; s < n_sums; ++s)
+        {
+            const double p = pixelToPFree(static_cast<double>(s) / denom, scale);
+            between += seen[s] && p != 0.0 && p != 1.0;
+        }
+        if (between > kProbabilisticGreyLevels) rule.mode = PixelMode::Scale;
+    }
     for (std::size_t s = 0; s < n_sums; ++s)
         lut[s] = COccupancyGridMap2D::p2l(
             static_cast<float>(pixelToPFree(static_cast<double>(s) / denom, rule)));
@@ -349,6 +395,7 @@ LoadedMap loadPlainImage(const std::string& path, const MapLoadOptions& opts)
     PixelRule rule;
     rule.occupied_thresh = opts.occupied_thresh;
     rule.free_thresh = opts.free_thresh;
+    applyGreyOption(rule, opts, path);
     LoadedMap out;
     out.file = path;
     out.format = "image";
@@ -749,6 +796,7 @@ LoadedMap loadRosYaml(const std::string& path, const MapLoadOptions& opts)
         fail(path,
              "key 'free_thresh' = " + keys.require("free_thresh").text() +
                  " must be below occupied_thresh = " + keys.require("occupied_thresh").text());
+    if (!keys.has("mode")) applyGreyOption(rule, opts, path);
     if (keys.has("mode"))
     {
         const std::string m = toLower(keys.scalar("mode"));
