@@ -2,7 +2,7 @@
 // method = consistent (doc/matching.md): groups of pairs verified by local geometric
 // consistency. Every test knows the answer first (a transform from map to ground truth), and
 // counts, for each match, the true pairs (the map vertex, put into the ground truth's frame,
-// lies within max(0.5 m, half the ground-truth vertex's clearance) of its partner), precision
+// lies within max(0.5 m, half the larger clearance of the two vertices) of its partner), precision
 // and recall (of the ground-truth vertices that have such a partner at all).
 // TOPOEVAL_DEBUG=1 prints every case; TOPOEVAL_DUMP_DIR=folder draws them.
 
@@ -52,7 +52,8 @@ struct Score
 
 bool isTrue(const TopologyGraph& gt, const TopologyGraph& map, const ToGt& to_gt, int a, int b)
 {
-    const double tol = std::max(0.5, 0.5 * gt.vertices[a].clearance_m);
+    const double tol =
+        std::max(0.5, 0.5 * std::max(gt.vertices[a].clearance_m, map.vertices[b].clearance_m));
     return (to_gt(map.vertices[b].position_m) - gt.vertices[a].position_m).norm() <= tol;
 }
 

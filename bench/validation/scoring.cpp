@@ -69,7 +69,10 @@ double mapDistortion(const mrpt::maps::COccupancyGridMap2D& map, const Truth& tr
     return std::sqrt(mse);
 }
 
-double CaseScore::pairTolerance(const TopoVertex& g) { return std::max(0.5, 0.5 * g.clearance_m); }
+double CaseScore::pairTolerance(const TopoVertex& g, const TopoVertex& m)
+{
+    return std::max(0.5, 0.5 * std::max(g.clearance_m, m.clearance_m));
+}
 
 CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const QualityReport& report,
                     const Truth& truth)
@@ -87,7 +90,8 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     {
         const auto& q = mapped[static_cast<std::size_t>(m)];
         const auto& gv = gt.vertices[static_cast<std::size_t>(g)];
-        return q && (*q - gv.position_m).norm() <= CaseScore::pairTolerance(gv);
+        return q && (*q - gv.position_m).norm() <=
+                        CaseScore::pairTolerance(gv, map.vertices[static_cast<std::size_t>(m)]);
     };
     for (const auto& g : gt.vertices)
     {

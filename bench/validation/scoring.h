@@ -53,8 +53,10 @@ struct CaseScore
      * vertices belong to [deg]; NaN when not a broken case or no group. */
     double max_group_rotation_error_deg = 0.0;
     double coverage = 0.0, quality = 0.0, relative_rmse_m = 0.0;
-    /** Pairs whose map vertex is more than this from its partner count as false [m]. */
-    static double pairTolerance(const TopoVertex& gt_vertex);
+    /** Pairs whose map vertex is more than this from its partner count as false [m]:
+     * max(0.5 m, half the larger clearance of the two vertices), since a dead end or a room's
+     * vertex sits on a medial axis that slides by a fraction of its clearance. */
+    static double pairTolerance(const TopoVertex& gt_vertex, const TopoVertex& map_vertex);
 };
 
 /** Scores a report of `gt_graph` vs `map_graph` against `truth`. */
