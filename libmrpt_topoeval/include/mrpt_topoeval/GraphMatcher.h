@@ -84,6 +84,11 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
     /** A group (maximum consistent set) is accepted when it has at least this many pairs;
      * smaller consistent sets occur by chance between unrelated places [1]. */
     int min_group_vertices = 5;
+    /** On a graph too small for min_group_vertices (a plan of a few rooms), a group of at least
+     * min_isomorphism_share of the smaller graph's matchable vertices (and 3) is accepted when
+     * its pairs' mean vertex similarity is at least this: three consistent distances alone are
+     * common between unrelated places [0..1]. */
+    double min_small_group_similarity = 0.7;
     /** ... after keeping its biggest part linked in both graphs: two pairs are linked when
      * their ground-truth vertices are within this many edges of each other, and so are their
      * map vertices (2: one vertex may be missing or extra in between). Consistency by chance

@@ -55,6 +55,7 @@ struct ConsistentMatch
     std::vector<std::vector<std::pair<int, int>>> cores;
     std::vector<GrownPair> grown;
     std::size_t candidates = 0;    //!< Candidate pairs (vertices of the consistency graph).
+    int min_group_size = 0;        //!< The effective smallest group (small graphs: fewer).
     std::size_t clique_steps = 0;  //!< Branch-and-bound steps spent, all searches.
 };
 

@@ -97,7 +97,7 @@ void matchConsistent(const TopologyGraph& ground_truth, const TopologyGraph& map
               { return x.ground_truth < y.ground_truth; });
     if (found.cores.empty())
         match.messages.push_back(
-            "no group of at least " + std::to_string(ctx.params.min_group_vertices) +
+            "no group of at least " + std::to_string(found.min_group_size) +
             " geometrically consistent pairs was found among " + std::to_string(found.candidates) +
             " candidate pairs (graphs of " + std::to_string(ctx.gt.numActive()) + " and " +
             std::to_string(ctx.map.numActive()) +

@@ -41,6 +41,7 @@ void GraphMatcherParameters::loadFromConfigFile(const mrpt::config::CConfigFileB
     MRPT_LOAD_CONFIG_VAR(distance_tolerance_ratio, double, c, s);
     MRPT_LOAD_CONFIG_VAR(clearance_tolerance_share, double, c, s);
     MRPT_LOAD_CONFIG_VAR(min_group_vertices, int, c, s);
+    MRPT_LOAD_CONFIG_VAR(min_small_group_similarity, double, c, s);
     MRPT_LOAD_CONFIG_VAR(support_hops, int, c, s);
     MRPT_LOAD_CONFIG_VAR(min_group_extent_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(max_groups, int, c, s);
@@ -89,6 +90,9 @@ void GraphMatcherParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                  "[ratio] ... plus this x each vertex's clearance");
     MRPT_SAVE_CONFIG_VAR_COMMENT(min_group_vertices,
                                  "[1] consistent: smallest group of consistent pairs accepted");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        min_small_group_similarity,
+        "[0..1] consistent: smallest mean similarity of a smaller group on a small graph");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         support_hops, "[1] consistent: pairs linked within this many edges in both maps");
     MRPT_SAVE_CONFIG_VAR_COMMENT(min_group_extent_m,
@@ -147,6 +151,10 @@ void GraphMatcherParameters::validate() const
                       "clearance_tolerance_share >= 0");
     internal::require(min_group_vertices >= 3, "min_group_vertices", min_group_vertices,
                       "min_group_vertices >= 3");
+    internal::require(std::isfinite(min_small_group_similarity) &&
+                          min_small_group_similarity >= 0.0 && min_small_group_similarity <= 1.0,
+                      "min_small_group_similarity", min_small_group_similarity,
+                      "0 <= min_small_group_similarity <= 1");
     internal::require(support_hops >= 1, "support_hops", support_hops, "support_hops >= 1");
     internal::require(internal::isNonNegative(min_group_extent_m), "min_group_extent_m",
                       min_group_extent_m, "min_group_extent_m >= 0");

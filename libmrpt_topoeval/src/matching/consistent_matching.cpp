@@ -202,6 +202,7 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                std::min(gt.vertices[a].clearance_m, map.vertices[b].clearance_m);
     };
     ConsistentMatch out;
+    out.min_group_size = p.min_group_vertices;
 
     // 1. Candidates: each gt vertex's k most similar map vertices, and each map vertex's k most
     //    similar gt vertices, of a degree within max_degree_difference.
@@ -261,6 +262,14 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     //    vertices are then taken and the next group searched (a broken map's other parts).
     std::vector<std::uint8_t> excluded(n, 0);
     MaxClique search(adjacent, n, std::size_t(p.max_clique_steps));
+    // On graphs too small for min_group_vertices (a bare plan of a few rooms) a group needs
+    // min_isomorphism_share of the smaller graph's matchable vertices, and never fewer than 3,
+    // as the paper's isomorphisms do (doc/matching.md).
+    const int smaller = std::min(ctx.gt.numActive(), ctx.map.numActive());
+    const int min_size =
+        std::min(p.min_group_vertices,
+                 std::max(3, int(std::ceil(p.min_isomorphism_share * double(smaller) - 1e-9))));
+    out.min_group_size = min_size;
     for (int attempt = 0; attempt < 2 * p.max_groups && int(out.cores.size()) < p.max_groups;
          ++attempt)
     {
@@ -270,7 +279,7 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                 pool.push_back(i);
         std::vector<int> clique = search.run(pool);
         out.clique_steps += search.steps();
-        if (int(clique.size()) < p.min_group_vertices) break;
+        if (int(clique.size()) < min_size) break;
         for (int i : clique) excluded[i] = 1;
 
         // Rigid fit: drop the worst pair while any lies farther from its fitted place than
@@ -296,21 +305,27 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             }
             if (worst < 0) break;
             clique.erase(clique.begin() + worst);
-            if (int(clique.size()) < p.min_group_vertices) break;
+            if (int(clique.size()) < min_size) break;
         }
-        if (int(clique.size()) < p.min_group_vertices) continue;
+        if (int(clique.size()) < min_size) continue;
         // Topological support: pairs (g1, m1), (g2, m2) are linked when g2 is within
         // support_hops edges of g1 and m2 within support_hops edges of m1. A true group is a
         // connected piece of both graphs; a set consistent by chance (different buildings made
         // of the same corridors and rooms) is scattered. Only the biggest linked component
         // stays.
         clique = largestLinkedComponent(clique, cands, ctx.gt, ctx.map, p.support_hops);
-        if (int(clique.size()) < p.min_group_vertices) continue;
+        if (int(clique.size()) < min_size) continue;
         double extent = 0.0;
         for (int i : clique)
             for (int j : clique)
                 extent = std::max(extent, (pg(cands[i].gt) - pg(cands[j].gt)).norm());
         if (extent < p.min_group_extent_m) continue;
+        if (int(clique.size()) < p.min_group_vertices)
+        {
+            double mean_s = 0.0;
+            for (int i : clique) mean_s += S(cands[i].gt, cands[i].map);
+            if (mean_s / double(clique.size()) < p.min_small_group_similarity) continue;
+        }
 
         std::vector<std::pair<int, int>> core;
         for (int i : clique)
