@@ -30,7 +30,7 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
      * slides with furniture, noise and resolution by a fraction of the room's half width.
      * Relative accuracy and local consistency count only the error beyond it. 0 = the paper's
      * plain errors [ratio]. */
-    double vertex_slack_share = 0.25;
+    double vertex_slack_share = 0.10;
     /** A pair's error counts at most this much in relative accuracy and local consistency, and
      * the relative alignment is refitted without pairs beyond it: one wrong pair must not decide
      * a score. 0 = the paper's plain RMS [m]. */
