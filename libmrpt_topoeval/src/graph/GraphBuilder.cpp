@@ -201,7 +201,7 @@ std::size_t removeSmallIslands(std::vector<std::uint8_t>& cls, int sx, int sy,
     cv::Mat c(sy, sx, CV_8UC1, cls.data());
     const cv::Mat solid = (c != kFree);
     cv::Mat labels, boxes, centroids;
-    const int n = cv::connectedComponentsWithStats(solid, labels, boxes, centroids, 8, CV_32S);
+    const int n = cv::connectedComponentsWithStats(solid, labels, boxes, centroids, 8, CV_32S, cv::CCL_SPAGHETTI);
     std::vector<char> remove(static_cast<std::size_t>(n), 0);
     std::vector<std::vector<cv::Point2f>> cells(static_cast<std::size_t>(n));
     for (int k = 1; k < n; ++k)
@@ -212,29 +212,34 @@ std::size_t removeSmallIslands(std::vector<std::uint8_t>& cls, int sx, int sy,
         // The enclosing circle is at least as wide as the box's longer side.
         remove[k] = !edge && std::max(w, h) < min_size_cells;
     }
-    for (int y = 0; y < sy; ++y)
-    {
-        const int* row = labels.ptr<int>(y);
-        for (int x = 0; x < sx; ++x)
-            if (remove[row[x]]) cells[row[x]].emplace_back(static_cast<float>(x), y);
-    }
+    // Candidates are small: their cells are read and cleared inside their own boxes only (two
+    // passes over a 10^8-cell label image cost more than the labelling itself).
     std::size_t removed = 0;
     for (int k = 1; k < n; ++k)
     {
         if (!remove[k]) continue;
+        const int x0 = boxes.at<int>(k, cv::CC_STAT_LEFT), y0 = boxes.at<int>(k, cv::CC_STAT_TOP);
+        const int x1 = x0 + boxes.at<int>(k, cv::CC_STAT_WIDTH);
+        const int y1 = y0 + boxes.at<int>(k, cv::CC_STAT_HEIGHT);
+        for (int y = y0; y < y1; ++y)
+        {
+            const int* row = labels.ptr<int>(y);
+            for (int x = x0; x < x1; ++x)
+                if (row[x] == k) cells[k].emplace_back(static_cast<float>(x), y);
+        }
         cv::Point2f centre;
         float radius = 0.0f;
         cv::minEnclosingCircle(cells[k], centre, radius);
         // Cell centres span the diameter; the cells' squares add about one cell.
-        remove[k] = 2.0 * radius + 1.0 < min_size_cells;
-        removed += remove[k] ? 1 : 0;
-    }
-    for (int y = 0; y < sy; ++y)
-    {
-        const int* row = labels.ptr<int>(y);
-        std::uint8_t* out = c.ptr<std::uint8_t>(y);
-        for (int x = 0; x < sx; ++x)
-            if (remove[row[x]]) out[x] = kFree;
+        if (!(2.0 * radius + 1.0 < min_size_cells)) continue;
+        ++removed;
+        for (int y = y0; y < y1; ++y)
+        {
+            const int* row = labels.ptr<int>(y);
+            std::uint8_t* out = c.ptr<std::uint8_t>(y);
+            for (int x = x0; x < x1; ++x)
+                if (row[x] == k) out[x] = kFree;
+        }
     }
     return removed;
 }
