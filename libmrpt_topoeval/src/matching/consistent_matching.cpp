@@ -30,8 +30,8 @@ struct Candidate
 };
 
 /** Maximum clique by branch and bound with a greedy-colouring bound (Tomita's MCQ, the
- * algorithm of Parra Bustos et al.). Deterministic; stops after `budget` steps with the best
- * clique found so far. */
+ * algorithm of Parra Bustos et al.). Deterministic; each run() stops after `budget` steps with
+ * the best clique found so far. */
 class MaxClique
 {
 public:
@@ -44,6 +44,7 @@ public:
     std::vector<int> run(std::vector<int> vertices)
     {
         m_best.clear();
+        m_steps = 0;
         // Highest consistency-graph degree first (MCQ's initial order), stable for ties.
         std::vector<int> deg(m_n, 0);
         for (int v : vertices)
@@ -56,6 +57,7 @@ public:
         expand(r, order, colour);
         return m_best;
     }
+    /** Steps spent by the last run(). */
     std::size_t steps() const { return m_steps; }
 
 private:
@@ -277,14 +279,54 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
         for (int i = 0; i < n; ++i)
             if (!excluded[i] && ctx.gt_to_map[cands[i].gt] < 0 && ctx.map_to_gt[cands[i].map] < 0)
                 pool.push_back(i);
+        // Once a group is accepted the maps are known to show one place, and a further part
+        // (a broken map's small part) needs only min_part_group_vertices pairs, linked to an
+        // accepted group in both graphs (checked below).
+        const bool part = !out.cores.empty() && p.min_part_group_vertices < min_size;
+        const int need = part ? p.min_part_group_vertices : min_size;
         std::vector<int> clique = search.run(pool);
         out.clique_steps += search.steps();
-        if (int(clique.size()) < min_size) break;
+        if (int(clique.size()) < need) break;
         for (int i : clique) excluded[i] = 1;
-
-        // Rigid fit: drop the worst pair while any lies farther from its fitted place than
-        // its tolerance (position noise, plus the ratio over the group's extent for bending).
+        // Rigid fit. The clique holds pairs whose distances agree; near a break that mixes two
+        // parts (within a few metres of the pivot a turn of 10-30 degrees keeps distances within
+        // tolerance). A fit of the whole clique is then a compromise between the parts, and
+        // dropping its worst pairs can leave neither part. So the fit starts from the biggest
+        // consensus: the transform of each two well separated pairs, and the pairs it puts
+        // within their tolerance of their fitted place (position noise, plus the ratio over the
+        // distance for bending). Only for a further group: on the first, the consensus also
+        // finds chance groups between different buildings.
         std::sort(clique.begin(), clique.end());
+        const std::vector<int> whole = clique;
+        auto tolerance = [&](const Candidate& c, double dist)
+        { return p.distance_tolerance_m + c.uncertainty_m + p.distance_tolerance_ratio * dist; };
+        {
+            std::vector<int> best;
+            double best_err = 0.0;
+            for (std::size_t i = 0; i < clique.size(); ++i)
+                for (std::size_t j = i + 1; j < clique.size(); ++j)
+                {
+                    const Candidate &ci = cands[clique[i]], &cj = cands[clique[j]];
+                    if ((pg(ci.gt) - pg(cj.gt)).norm() < p.min_consensus_baseline_m) continue;
+                    const Transform2D T =
+                        hornAlign({pg(ci.gt), pg(cj.gt)}, {pm(ci.map), pm(cj.map)});
+                    std::vector<int> in;
+                    double err_sum = 0.0;
+                    for (int k : clique)
+                    {
+                        const Candidate& c = cands[k];
+                        const double dist =
+                            std::min((pg(c.gt) - pg(ci.gt)).norm(), (pg(c.gt) - pg(cj.gt)).norm());
+                        const double err = (pg(c.gt) - T.apply(pm(c.map))).norm();
+                        if (err <= tolerance(c, dist)) in.push_back(k), err_sum += err;
+                    }
+                    if (in.size() > best.size() || (in.size() == best.size() && err_sum < best_err))
+                        best = std::move(in), best_err = err_sum;
+                }
+            if (!out.cores.empty() && int(best.size()) >= need) clique = best;
+        }
+        // Then drop the worst pair while any lies farther from its place under the fit of the
+        // set than its tolerance.
         for (;;)
         {
             std::vector<Eigen::Vector2d> a, b;
@@ -297,29 +339,44 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             double worst_excess = 0.0;
             for (std::size_t k = 0; k < clique.size(); ++k)
             {
-                const Candidate& c = cands[clique[k]];
-                const double tol = p.distance_tolerance_m + c.uncertainty_m +
-                                   p.distance_tolerance_ratio * (a[k] - centre).norm();
-                const double excess = (a[k] - T.apply(b[k])).norm() - tol;
+                const double excess = (a[k] - T.apply(b[k])).norm() -
+                                      tolerance(cands[clique[k]], (a[k] - centre).norm());
                 if (excess > worst_excess) worst_excess = excess, worst = int(k);
             }
             if (worst < 0) break;
             clique.erase(clique.begin() + worst);
-            if (int(clique.size()) < min_size) break;
+            if (int(clique.size()) < need) break;
         }
-        if (int(clique.size()) < min_size) continue;
+        if (int(clique.size()) < need) continue;
         // Topological support: pairs (g1, m1), (g2, m2) are linked when g2 is within
         // support_hops edges of g1 and m2 within support_hops edges of m1. A true group is a
         // connected piece of both graphs; a set consistent by chance (different buildings made
         // of the same corridors and rooms) is scattered. Only the biggest linked component
         // stays.
         clique = largestLinkedComponent(clique, cands, ctx.gt, ctx.map, p.support_hops);
-        if (int(clique.size()) < min_size) continue;
+        if (int(clique.size()) < need) continue;
         double extent = 0.0;
         for (int i : clique)
             for (int j : clique)
                 extent = std::max(extent, (pg(cands[i].gt) - pg(cands[j].gt)).norm());
         if (extent < p.min_group_extent_m) continue;
+        if (int(clique.size()) < min_size)
+        {
+            // A small part: one of its pairs lies within support_hops edges of an accepted
+            // group's pair in both graphs (the parts of a broken map meet at their cuts), and
+            // it is as similar as a small graph's group must be (below).
+            bool linked = false;
+            for (int i : clique)
+            {
+                const auto near_g = nearInGraph(ctx.gt, cands[i].gt, p.support_hops);
+                const auto near_m = nearInGraph(ctx.map, cands[i].map, p.support_hops);
+                for (int g : near_g)
+                    if (ctx.gt_to_map[g] >= 0 &&
+                        std::find(near_m.begin(), near_m.end(), ctx.gt_to_map[g]) != near_m.end())
+                        linked = true;
+            }
+            if (!linked) continue;
+        }
         if (int(clique.size()) < p.min_group_vertices)
         {
             double mean_s = 0.0;
@@ -327,6 +384,11 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             if (mean_s / double(clique.size()) < p.min_small_group_similarity) continue;
         }
 
+        // Accepted: the clique's other pairs go back to the pool (another part's pairs, taken
+        // into this clique by the distances near the pivot, may make that part's group). A
+        // rejected clique's pairs are not tried again (more tries, more chance groups between
+        // different buildings).
+        for (int i : whole) excluded[i] = 0;
         std::vector<std::pair<int, int>> core;
         for (int i : clique)
         {
