@@ -23,15 +23,6 @@ std::uint32_t caseSeed(std::uint32_t seed, const std::string& id)
     return h;
 }
 
-std::string fmt(double v, int decimals)
-{
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(decimals);
-    s << v;
-    return s.str();
-}
-
 void addVariants(Corpus& corpus, std::size_t gi, std::size_t other, bool generated, bool quick,
                  std::uint32_t seed)
 {

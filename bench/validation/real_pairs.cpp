@@ -50,15 +50,6 @@ constexpr double kCheckTol015_m = 0.15, kCheckTol025_m = 0.25;
 /** Gazebo local truth: estimated poses whose estimated -> true positions are fitted per point. */
 constexpr int kLocalFitPoses = 6;
 
-std::string fmt(double v, int decimals)
-{
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(decimals);
-    s << v;
-    return s.str();
-}
-
 COccupancyGridMap2D loadGrid(const fs::path& file, double resolution_m = 0.05)
 {
     MapLoadOptions opts;

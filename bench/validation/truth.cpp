@@ -2,6 +2,7 @@
 #include "truth.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace mrpt_topoeval::validation
 {
@@ -19,6 +20,15 @@ Rigid2D Rigid2D::inverse() const
     // R^T (-t)
     inv.t_m = {-(c * t_m.x() + s * t_m.y()), -(-s * t_m.x() + c * t_m.y())};
     return inv;
+}
+
+std::string fmt(double v, int decimals)
+{
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(decimals);
+    s << v;
+    return s.str();
 }
 
 Rigid2D Rigid2D::compose(const Rigid2D& other) const

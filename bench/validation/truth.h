@@ -26,6 +26,9 @@ struct Rigid2D
     Rigid2D compose(const Rigid2D& other) const;
 };
 
+/** `v` in fixed notation with `decimals` digits (for truth sources and notes). */
+std::string fmt(double v, int decimals);
+
 /** Everything the scorer needs to know about one map against its ground truth. */
 struct Truth
 {
