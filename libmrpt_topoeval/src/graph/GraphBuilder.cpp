@@ -199,46 +199,54 @@ std::size_t removeSmallIslands(std::vector<std::uint8_t>& cls, int sx, int sy,
 {
     if (min_size_cells <= 0.0 || cls.empty()) return 0;
     cv::Mat c(sy, sx, CV_8UC1, cls.data());
-    const cv::Mat solid = (c != kFree);
-    cv::Mat labels, boxes, centroids;
-    const int n = cv::connectedComponentsWithStats(solid, labels, boxes, centroids, 8, CV_32S, cv::CCL_SPAGHETTI);
-    std::vector<char> remove(static_cast<std::size_t>(n), 0);
-    std::vector<std::vector<cv::Point2f>> cells(static_cast<std::size_t>(n));
-    for (int k = 1; k < n; ++k)
-    {
-        const int x = boxes.at<int>(k, cv::CC_STAT_LEFT), y = boxes.at<int>(k, cv::CC_STAT_TOP);
-        const int w = boxes.at<int>(k, cv::CC_STAT_WIDTH), h = boxes.at<int>(k, cv::CC_STAT_HEIGHT);
-        const bool edge = x == 0 || y == 0 || x + w == sx || y + h == sy;
-        // The enclosing circle is at least as wide as the box's longer side.
-        remove[k] = !edge && std::max(w, h) < min_size_cells;
-    }
-    // Candidates are small: their cells are read and cleared inside their own boxes only (two
-    // passes over a 10^8-cell label image cost more than the labelling itself).
+    // Labelled in overlapping strips of rows, not the whole grid at once: a 10^8-cell label
+    // image (400 MB) cost more than the labelling. A component that touches neither edge row of
+    // its strip is a whole component of the grid; an island (narrower than min_size_cells)
+    // lies whole in the strip whose core rows hold its top row, and is judged there only.
+    const int overlap = static_cast<int>(std::ceil(min_size_cells)) + 2;
+    const int core = std::max(256, 4 * overlap);
     std::size_t removed = 0;
-    for (int k = 1; k < n; ++k)
+    for (int y0 = 0; y0 < sy; y0 += core)
     {
-        if (!remove[k]) continue;
-        const int x0 = boxes.at<int>(k, cv::CC_STAT_LEFT), y0 = boxes.at<int>(k, cv::CC_STAT_TOP);
-        const int x1 = x0 + boxes.at<int>(k, cv::CC_STAT_WIDTH);
-        const int y1 = y0 + boxes.at<int>(k, cv::CC_STAT_HEIGHT);
-        for (int y = y0; y < y1; ++y)
+        const int top = std::max(0, y0 - overlap), bottom = std::min(sy, y0 + core + overlap);
+        cv::Mat strip = c.rowRange(top, bottom);
+        const cv::Mat solid = (strip != kFree);
+        cv::Mat labels, boxes, centroids;
+        const int n = cv::connectedComponentsWithStats(solid, labels, boxes, centroids, 8, CV_32S);
+        std::vector<cv::Point2f> cells;
+        for (int k = 1; k < n; ++k)
         {
-            const int* row = labels.ptr<int>(y);
-            for (int x = x0; x < x1; ++x)
-                if (row[x] == k) cells[k].emplace_back(static_cast<float>(x), y);
-        }
-        cv::Point2f centre;
-        float radius = 0.0f;
-        cv::minEnclosingCircle(cells[k], centre, radius);
-        // Cell centres span the diameter; the cells' squares add about one cell.
-        if (!(2.0 * radius + 1.0 < min_size_cells)) continue;
-        ++removed;
-        for (int y = y0; y < y1; ++y)
-        {
-            const int* row = labels.ptr<int>(y);
-            std::uint8_t* out = c.ptr<std::uint8_t>(y);
-            for (int x = x0; x < x1; ++x)
-                if (row[x] == k) out[x] = kFree;
+            const int x0 = boxes.at<int>(k, cv::CC_STAT_LEFT);
+            const int ys = boxes.at<int>(k, cv::CC_STAT_TOP);  // strip rows
+            const int w = boxes.at<int>(k, cv::CC_STAT_WIDTH);
+            const int h = boxes.at<int>(k, cv::CC_STAT_HEIGHT);
+            const int gy = top + ys;  // grid row of its top
+            // The enclosing circle is at least as wide as the box's longer side.
+            if (std::max(w, h) >= min_size_cells) continue;
+            if (gy < y0 || gy >= y0 + core) continue;       // judged in another strip
+            if (ys == 0 || ys + h == strip.rows) continue;  // strip or grid edge row
+            if (x0 == 0 || x0 + w == sx) continue;          // grid edge column
+            cells.clear();
+            for (int y = ys; y < ys + h; ++y)
+            {
+                const int* row = labels.ptr<int>(y);
+                for (int x = x0; x < x0 + w; ++x)
+                    if (row[x] == k)
+                        cells.emplace_back(static_cast<float>(x), static_cast<float>(y));
+            }
+            cv::Point2f centre;
+            float radius = 0.0f;
+            cv::minEnclosingCircle(cells, centre, radius);
+            // Cell centres span the diameter; the cells' squares add about one cell.
+            if (!(2.0 * radius + 1.0 < min_size_cells)) continue;
+            ++removed;
+            for (int y = ys; y < ys + h; ++y)
+            {
+                const int* row = labels.ptr<int>(y);
+                std::uint8_t* out = strip.ptr<std::uint8_t>(y);
+                for (int x = x0; x < x0 + w; ++x)
+                    if (row[x] == k) out[x] = kFree;
+            }
         }
     }
     return removed;
