@@ -379,10 +379,12 @@ TEST(ConsistentMatching, GazeboOfficeSlamMaps)
 
 TEST(ConsistentMatching, IntelReferenceAgainstIcpSlam)
 {
-    // No known transform: the figures are printed; the matching time is held.
+    // The per-keyframe truth of this bent map is the validation corpus's (doc/validation.md:
+    // 44 pairs, 35 true); here the match is held to its size. Its time is a benchmark
+    // (bench_matching BM_Compare/intel), not a test: timed tests fail under the sanitizers.
     const auto never = [](const Eigen::Vector2d&) { return Eigen::Vector2d(1e9, 1e9); };
     const auto s = realPair("intel_icp_slam", "radish/intel-corrected_ref.yaml",
                             "slam_maps/intel_icp-slam_app-final.yaml", never);
     if (!s) GTEST_SKIP() << "no ../shared/data";
-    EXPECT_LT(s->match.timing_ms.at("total"), 100.0);
+    EXPECT_GE(s->match.pairs.size(), 30u);
 }
