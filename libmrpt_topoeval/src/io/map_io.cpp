@@ -321,7 +321,9 @@ void imageToGrid(const std::string& image_path, const internal::ImageHeader& hdr
                     sum += img.depth() == CV_8U
                                ? img.ptr<std::uint8_t>(y)[static_cast<std::size_t>(x) * ch + c]
                                : img.ptr<std::uint16_t>(y)[static_cast<std::size_t>(x) * ch + c];
-                seen[sum] = 1;
+                // Netpbm samples above the declared maxval are malformed: read as white, as
+                // the pixel loop below reads them.
+                seen[std::min(sum, n_sums - 1)] = 1;
             }
         std::size_t between = 0;
         PixelRule scale = rule;
