@@ -120,7 +120,8 @@ Score score(const std::string& name, const COccupancyGridMap2D& gg, const Topolo
                     (to_gt(map.vertices[b].position_m) - gt.vertices[a].position_m).norm();
                 if (d < bd) bd = d, best = int(b);
             }
-            if (best >= 0 && isTrue(gt, map, to_gt, int(a), best)) truth_pairs.emplace_back(int(a), best);
+            if (best >= 0 && isTrue(gt, map, to_gt, int(a), best))
+                truth_pairs.emplace_back(int(a), best);
         }
         std::vector<double> e_abs, e_norm;
         for (std::size_t i = 0; i < truth_pairs.size(); ++i)

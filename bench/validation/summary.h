@@ -20,8 +20,8 @@ struct CaseResult
     double wall_tolerance_m = 0.0;
     CaseScore score;
     double distortion_m = 0.0;  //!< mapDistortion() of the case's map.
-    double time_ms = 0.0;  //!< evaluate() on the case (graph of the map, match, scores).
-    std::string error;     //!< Non-empty when the case threw.
+    double time_ms = 0.0;       //!< evaluate() on the case (graph of the map, match, scores).
+    std::string error;          //!< Non-empty when the case threw.
 };
 
 /** Aggregates of a set of cases. Precision and recall are pooled (sums of pairs). */

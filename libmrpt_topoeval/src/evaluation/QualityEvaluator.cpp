@@ -80,9 +80,9 @@ void QualityParameters::validate() const
                       "brokenness_max_squared_error_m2 > 0");
     internal::require(brokenness_min_vertices >= 2, "brokenness_min_vertices",
                       brokenness_min_vertices, "brokenness_min_vertices >= 2");
-    internal::require(std::isfinite(vertex_slack_share) && vertex_slack_share >= 0.0 &&
-                          vertex_slack_share <= 1.0,
-                      "vertex_slack_share", vertex_slack_share, "0 <= vertex_slack_share <= 1");
+    internal::require(
+        std::isfinite(vertex_slack_share) && vertex_slack_share >= 0.0 && vertex_slack_share <= 1.0,
+        "vertex_slack_share", vertex_slack_share, "0 <= vertex_slack_share <= 1");
     internal::require(internal::isNonNegative(outlier_distance_m), "outlier_distance_m",
                       outlier_distance_m, "outlier_distance_m >= 0");
     internal::require(internal::isPositive(accuracy_scale_m), "accuracy_scale_m", accuracy_scale_m,
@@ -137,8 +137,8 @@ std::vector<double> graphDistances(const TopologyGraph& g, int src)
 double pairSlack(const TopologyGraph& gt, const TopologyGraph& map, const VertexPair& pr,
                  const QualityParameters& p)
 {
-    return p.vertex_slack_share * std::max(gt.vertices[pr.ground_truth].clearance_m,
-                                           map.vertices[pr.map].clearance_m);
+    return p.vertex_slack_share *
+           std::max(gt.vertices[pr.ground_truth].clearance_m, map.vertices[pr.map].clearance_m);
 }
 
 // An error as the robust scores count it: beyond the slack, at most outlier_distance_m.
@@ -176,10 +176,9 @@ std::vector<ConsistencyClass> localConsistency(const TopologyGraph& gt, const To
                                   : dg < p.consistency_medium_max_m ? cls[1]
                                                                     : cls[2];
             ++c.pairs;
-            c.mean_error_m += countedError(std::abs(d_gt - d_map),
-                                           pairSlack(gt, map, m.pairs[i], p) +
-                                               pairSlack(gt, map, m.pairs[j], p),
-                                           p);
+            c.mean_error_m += countedError(
+                std::abs(d_gt - d_map),
+                pairSlack(gt, map, m.pairs[i], p) + pairSlack(gt, map, m.pairs[j], p), p);
         }
     }
     for (auto& c : cls)
