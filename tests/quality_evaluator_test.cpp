@@ -13,6 +13,7 @@
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/output.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -381,4 +382,64 @@ TEST(QualityEvaluator, PrebuiltGroundTruthGraphGivesTheSameReport)
         EXPECT_EQ(a.match.pairs[i].map, b.match.pairs[i].map);
     }
     EXPECT_EQ(a.messages, b.messages);
+}
+
+// Issue 11, brokenness from small parts. The campus's graph, and a copy in which one junction
+// and its dead ends (3 or 4 vertices, a small part) are turned by 20 degrees about a
+// point 5 m away, matched vertex for vertex: what brokenness makes of a given match. The paper's
+// rule (a group needs brokenness_min_vertices = 5) cannot count a part that small; a group of
+// brokenness_min_part_vertices (3) whose fit is clearly separate from the rest does.
+TEST(QualityEvaluator, SmallTurnedPartCountsWhenClearlySeparate)
+{
+    const TopologyGraph g = buildTopologyGraph(makeCampusMap());
+    // The first junction with 2 or 3 dead ends.
+    std::vector<int> star;
+    for (const auto& v : g.vertices)
+    {
+        if (v.spurious || v.degree() < 3) continue;
+        std::vector<int> s{v.id};
+        for (const auto& inc : v.ring)
+        {
+            const auto& o = g.vertices[inc.other_vertex];
+            if (!o.spurious && o.degree() == 1) s.push_back(o.id);
+        }
+        if (s.size() >= 3 && s.size() <= 4)
+        {
+            star = s;
+            break;
+        }
+    }
+    ASSERT_FALSE(star.empty());
+    auto inStar = [&](int v) { return std::find(star.begin(), star.end(), v) != star.end(); };
+    const Eigen::Vector2d pivot = g.vertices[star[0]].position_m + Eigen::Vector2d(5.0, 0.0);
+    auto turned = [&](double yaw_deg)
+    {
+        TopologyGraph m = g;
+        for (int v : star)
+            m.vertices[v].position_m =
+                pivot + Eigen::Rotation2Dd(yaw_deg * kDeg) * (g.vertices[v].position_m - pivot);
+        return m;
+    };
+    GraphMatch match;
+    for (const auto& v : g.vertices)
+        if (!v.spurious) match.pairs.push_back({v.id, v.id, MatchStage::Isomorphism, 1.0, 0});
+    match.isomorphism = match.pairs.size();
+    match.isomorphism_sizes = {match.pairs.size()};
+
+    const TopologyGraph m = turned(20.0);
+    const QualityReport r = evaluateMatch(g, m, match);
+    if (std::getenv("TOPOEVAL_DEBUG")) std::cout << r.fullReport();
+    ASSERT_EQ(r.brokenness.degree, 1);
+    const auto& part = r.brokenness.groups.back();
+    EXPECT_EQ(part.gt_vertices.size(), star.size());
+    for (int v : part.gt_vertices) EXPECT_TRUE(inStar(v)) << v;
+    EXPECT_NEAR(
+        std::remainder(part.transform.yaw_deg - r.brokenness.groups[0].transform.yaw_deg, 360.0),
+        -20.0, 1.0);
+
+    QualityParameters paper;
+    paper.brokenness_min_part_vertices = paper.brokenness_min_vertices;
+    EXPECT_EQ(evaluateMatch(g, m, match, paper).brokenness.degree, 0);
+    // Turned by 3 degrees (0.26 m at 5 m), the star is not clearly separate: no break.
+    EXPECT_EQ(evaluateMatch(g, turned(3.0), match).brokenness.degree, 0);
 }

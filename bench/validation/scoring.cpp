@@ -93,6 +93,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
         return q && (*q - gv.position_m).norm() <=
                         CaseScore::pairTolerance(gv, map.vertices[static_cast<std::size_t>(m)]);
     };
+    std::map<int, int> counterparts_per_part;
     for (const auto& g : gt.vertices)
     {
         if (g.spurious) continue;
@@ -100,6 +101,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             if (!m.spurious && isTrue(g.id, m.id))
             {
                 ++s.gt_with_counterpart;
+                if (truth.part_of) ++counterparts_per_part[truth.part_of(m.position_m)];
                 break;
             }
     }
@@ -115,7 +117,9 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     }
     if (truth.part_of && truth.injected_breaks >= 0)
     {
-        s.parts_with_3_pairs = s.parts_with_5_pairs = 0;
+        s.parts_with_3_pairs = s.parts_with_5_pairs = s.parts_with_5_counterparts = 0;
+        for (const auto& [part, n] : counterparts_per_part)
+            s.parts_with_5_counterparts += (part >= 0 && n >= 5) ? 1 : 0;
         for (const auto& [part, n] : true_per_part)
         {
             s.parts_with_3_pairs += (part >= 0 && n >= 3) ? 1 : 0;

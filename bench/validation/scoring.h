@@ -49,6 +49,10 @@ struct CaseScore
     /** Broken maps: parts with at least 3 and at least 5 true pairs (how many groups a
      * brokenness measure could find from this match); -1 when not broken. */
     int parts_with_3_pairs = -1, parts_with_5_pairs = -1;
+    /** Broken maps: parts holding at least 5 ground-truth vertices with a counterpart, i.e.
+     * parts that any matcher could make a 5-vertex group of (a break is measurable when every
+     * part is one); -1 when not broken. */
+    int parts_with_5_counterparts = -1;
     /** Largest |yaw error| of an accepted brokenness group against the part most of its
      * vertices belong to [deg]; NaN when not a broken case or no group. */
     double max_group_rotation_error_deg = 0.0;

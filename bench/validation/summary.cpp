@@ -82,6 +82,11 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
         {
             ++a.broken;
             if (s.brokenness_found == s.brokenness_injected) ++a.broken_exact;
+            if (s.parts_with_5_counterparts >= s.brokenness_injected + 1)
+            {
+                ++a.broken_measurable;
+                if (s.brokenness_found == s.brokenness_injected) ++a.broken_measurable_exact;
+            }
             if (std::isfinite(s.max_group_rotation_error_deg))
                 a.max_rotation_error_deg =
                     std::max(a.max_rotation_error_deg, s.max_group_rotation_error_deg);
@@ -219,6 +224,11 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
                       f.points, num(f.spearman).c_str());
         o << buf;
     }
+    for (const auto& a : s.kinds)
+        if (a.name == "broken")
+            o << "\nbroken: exactly right in " << a.broken_exact << " of " << a.broken << "; in "
+              << a.broken_measurable_exact << " of the " << a.broken_measurable
+              << " whose every part holds 5 ground-truth vertices with a counterpart\n";
     for (const auto& a : s.kinds)
         if (a.name == "crop")
             o << "\ncrop: mean |coverage - share of ground-truth vertices kept| = "

@@ -34,7 +34,10 @@ struct Aggregate
     double precision() const;
     double recall() const;
     std::size_t broken = 0, broken_exact = 0;  //!< Cases with injected breaks, found exactly.
-    double max_rotation_error_deg = 0.0;       //!< Over every group of every broken case.
+    /** Broken cases whose every part holds 5 ground-truth vertices with a counterpart (so a
+     * 5-vertex group could be made in each), and of those the ones found exactly. */
+    std::size_t broken_measurable = 0, broken_measurable_exact = 0;
+    double max_rotation_error_deg = 0.0;  //!< Over every group of every broken case.
     double mean_coverage = 0.0, max_coverage = 0.0, mean_quality = 0.0;
     double mean_coverage_error = 0.0;  //!< Crops: mean |coverage - share with counterpart|.
     double mean_time_ms = 0.0;

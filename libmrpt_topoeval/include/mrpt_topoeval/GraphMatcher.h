@@ -102,17 +102,23 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
     /** Branch-and-bound steps per clique search; when spent the best clique so far is taken
      * (bounds the time on dense consistency graphs; deterministic) [1]. */
     int max_clique_steps = 200000;
-    /** A further group's rigid fit starts from the transform of two of its clique's pairs at
-     * least this far apart in the ground truth that puts the most pairs in place (near a break
-     * a clique mixes two parts, and a fit of all is a compromise); 2 m keeps the rotation of two
-     * vertices known within 0.25 m within about 7 degrees, under the 10 degrees of a small break
-     * [m]. */
+    /** A further group (another part of a broken map) is the best consensus of the candidates
+     * still free: the transform of two linked, consistent pairs at least this far apart in the
+     * ground truth, and the pairs it puts in place (near a break a clique mixes two parts, and
+     * a fit of all is a compromise); 2 m keeps the rotation of two vertices known within
+     * 0.25 m within about 7 degrees, under the 10 degrees of a small break [m]. */
     double min_consensus_baseline_m = 2.0;
     /** Once a group is accepted, a further group (a small part of a broken map) needs only
-     * this many pairs when one of them is linked (support_hops) to an accepted group's pair in
-     * both graphs and their mean similarity is at least min_small_group_similarity: the 5
-     * of the paper miss the parts of a building cut in three or four [1]. */
+     * this many pairs when it bridges to an accepted group (part_bridge_ratio) and their mean
+     * similarity is at least min_small_group_similarity: the 5 of the paper miss the parts of
+     * a building cut in three or four [1]. */
     int min_part_group_vertices = 3;
+    /** A further group next to an accepted one in the ground truth (support_hops) must have a
+     * bridge: one such neighbour pair whose map distance equals its ground-truth distance
+     * within distance_tolerance_m + clearance share + this x the distance (a turn of up to 30
+     * degrees at the cut changes it by about half). Rejects chance groups that sit next to an
+     * accepted group in the ground truth but elsewhere in the map [ratio]. */
+    double part_bridge_ratio = 0.5;
     /** Growing: an unmatched vertex near a group is paired where the rigid fit of the group's
      * pairs within this radius of it predicts its partner [m]; */
     double growing_radius_m = 12.0;

@@ -25,6 +25,13 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     double brokenness_max_squared_error_m2 = 0.2;
     /** Groups smaller than this are not counted (paper: MinNumberVertices = 5) [1]. */
     int brokenness_min_vertices = 5;
+    /** A group of at least this many vertices but fewer than brokenness_min_vertices still
+     * counts when every counted group places its map vertices at least
+     * brokenness_part_min_gap_m2 (mean squared) from where its own fit does: a small part
+     * turned against the rest. = brokenness_min_vertices is the paper's rule [1]. */
+    int brokenness_min_part_vertices = 3;
+    /** See brokenness_min_part_vertices [m^2]. */
+    double brokenness_part_min_gap_m2 = 1.0;
     /** A pair's position error up to this share of its vertices' clearance (the larger of the
      * two) is vertex jitter, not map error: a vertex in a room sits on the medial axis, which
      * slides with furniture, noise and resolution by a fraction of the room's half width.

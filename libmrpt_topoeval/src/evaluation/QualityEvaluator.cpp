@@ -29,6 +29,8 @@ void QualityParameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
     MRPT_LOAD_CONFIG_VAR(consistency_medium_max_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(brokenness_max_squared_error_m2, double, c, s);
     MRPT_LOAD_CONFIG_VAR(brokenness_min_vertices, int, c, s);
+    MRPT_LOAD_CONFIG_VAR(brokenness_min_part_vertices, int, c, s);
+    MRPT_LOAD_CONFIG_VAR(brokenness_part_min_gap_m2, double, c, s);
     MRPT_LOAD_CONFIG_VAR(vertex_slack_share, double, c, s);
     MRPT_LOAD_CONFIG_VAR(outlier_distance_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(accuracy_scale_m, double, c, s);
@@ -49,6 +51,10 @@ void QualityParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                  "[m^2] a brokenness group's largest mean squared error");
     MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_min_vertices,
                                  "[1] smallest brokenness group counted (paper: 5)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_min_part_vertices,
+                                 "[1] a smaller group counts when clearly separate (paper: = min)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_part_min_gap_m2,
+                                 "[m^2] ... placed this far (mean sq.) from every counted group");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         vertex_slack_share,
         "[ratio] pair error up to this share of the vertices' clearance is jitter (0 = paper)");
@@ -80,6 +86,13 @@ void QualityParameters::validate() const
                       "brokenness_max_squared_error_m2 > 0");
     internal::require(brokenness_min_vertices >= 2, "brokenness_min_vertices",
                       brokenness_min_vertices, "brokenness_min_vertices >= 2");
+    internal::require(brokenness_min_part_vertices >= 2 &&
+                          brokenness_min_part_vertices <= brokenness_min_vertices,
+                      "brokenness_min_part_vertices", brokenness_min_part_vertices,
+                      "2 <= brokenness_min_part_vertices <= brokenness_min_vertices");
+    internal::require(internal::isPositive(brokenness_part_min_gap_m2),
+                      "brokenness_part_min_gap_m2", brokenness_part_min_gap_m2,
+                      "brokenness_part_min_gap_m2 > 0");
     internal::require(
         std::isfinite(vertex_slack_share) && vertex_slack_share >= 0.0 && vertex_slack_share <= 1.0,
         "vertex_slack_share", vertex_slack_share, "0 <= vertex_slack_share <= 1");
@@ -235,6 +248,7 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                      });
 
     std::vector<char> taken(gt.vertices.size(), 0), seeded(gt.vertices.size(), 0);
+    std::vector<std::vector<int>> small;  // groups under brokenness_min_vertices (step 6)
     for (int seed : seeds)
     {
         if (taken[seed] || seeded[seed]) continue;
@@ -308,7 +322,12 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                 pm.push_back(map.vertices[partner[v]].position_m);
             }
         }
-        if (static_cast<int>(grp.gt_vertices.size()) < p.brokenness_min_vertices) continue;
+        if (static_cast<int>(grp.gt_vertices.size()) < p.brokenness_min_vertices)
+        {
+            if (static_cast<int>(grp.gt_vertices.size()) >= p.brokenness_min_part_vertices)
+                small.push_back(grp.gt_vertices);
+            continue;
+        }
         grp.transform = internal::hornAlign(pg, pm, &grp.squared_error_m2);
         for (int v : grp.gt_vertices)
         {
@@ -391,6 +410,10 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
         }
         b.groups[j].gt_vertices = std::move(keep);
     }
+    for (const auto& g : b.groups)
+        if (static_cast<int>(g.gt_vertices.size()) < p.brokenness_min_vertices &&
+            static_cast<int>(g.gt_vertices.size()) >= p.brokenness_min_part_vertices)
+            small.push_back(g.gt_vertices);
     b.groups.erase(std::remove_if(b.groups.begin(), b.groups.end(),
                                   [&](const BrokennessGroup& g) {
                                       return static_cast<int>(g.gt_vertices.size()) <
@@ -398,6 +421,42 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                                   }),
                    b.groups.end());
     for (auto& g : b.groups) g.transform = fitOf(g.gt_vertices, &g.squared_error_m2);
+    // Small parts (ours): a part of 3-4 matched vertices is too small for the paper's rule, but
+    // when its own fit is good and every counted group places its map vertices clearly
+    // elsewhere (mean squared gap of at least brokenness_part_min_gap_m2), it is a part turned
+    // against the rest, as the parts of a map broken three times often are.
+    std::stable_sort(small.begin(), small.end(),
+                     [](const auto& x, const auto& y) { return x.size() > y.size(); });
+    if (!b.groups.empty())
+        for (auto& cand : small)
+        {
+            std::vector<int> free;
+            for (int v : cand)
+            {
+                bool used = false;
+                for (const auto& g : b.groups)
+                    used = used || std::find(g.gt_vertices.begin(), g.gt_vertices.end(), v) !=
+                                       g.gt_vertices.end();
+                if (!used) free.push_back(v);
+            }
+            if (static_cast<int>(free.size()) < p.brokenness_min_part_vertices) continue;
+            BrokennessGroup grp;
+            grp.gt_vertices = free;
+            grp.transform = fitOf(free, &grp.squared_error_m2);
+            if (grp.squared_error_m2 > p.brokenness_max_squared_error_m2) continue;
+            bool separate = true;
+            for (const auto& g : b.groups)
+            {
+                double gap = 0.0;
+                for (int v : free)
+                {
+                    const Eigen::Vector2d q = map.vertices[partner[v]].position_m;
+                    gap += (g.transform.apply(q) - grp.transform.apply(q)).squaredNorm();
+                }
+                separate = separate && gap / double(free.size()) >= p.brokenness_part_min_gap_m2;
+            }
+            if (separate) b.groups.push_back(std::move(grp));
+        }
     std::stable_sort(b.groups.begin(), b.groups.end(),
                      [](const auto& x, const auto& y)
                      { return x.gt_vertices.size() > y.gt_vertices.size(); });

@@ -48,6 +48,7 @@ void GraphMatcherParameters::loadFromConfigFile(const mrpt::config::CConfigFileB
     MRPT_LOAD_CONFIG_VAR(max_clique_steps, int, c, s);
     MRPT_LOAD_CONFIG_VAR(min_consensus_baseline_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(min_part_group_vertices, int, c, s);
+    MRPT_LOAD_CONFIG_VAR(part_bridge_ratio, double, c, s);
     MRPT_LOAD_CONFIG_VAR(growing_radius_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(position_tolerance_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(min_consistent_growing_similarity, double, c, s);
@@ -104,10 +105,13 @@ void GraphMatcherParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                  "[1] consistent: branch-and-bound steps per clique search");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         min_consensus_baseline_m,
-        "[m] consistent: a clique's fit starts from two of its pairs at least this far apart");
+        "[m] consistent: a further group is the fit of two pairs at least this far apart");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         min_part_group_vertices,
-        "[1] consistent: smallest further group, linked to an accepted one (a broken part)");
+        "[1] consistent: smallest further group, bridged to an accepted one (a broken part)");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        part_bridge_ratio,
+        "[ratio] consistent: a further group's neighbour pairs keep their distance within this");
     MRPT_SAVE_CONFIG_VAR_COMMENT(
         growing_radius_m, "[m] consistent growing: rigid fit of the group's pairs this near");
     MRPT_SAVE_CONFIG_VAR_COMMENT(position_tolerance_m,
@@ -171,6 +175,8 @@ void GraphMatcherParameters::validate() const
                       "max_clique_steps >= 1");
     internal::require(internal::isNonNegative(min_consensus_baseline_m), "min_consensus_baseline_m",
                       min_consensus_baseline_m, "min_consensus_baseline_m >= 0");
+    internal::require(internal::isNonNegative(part_bridge_ratio), "part_bridge_ratio",
+                      part_bridge_ratio, "part_bridge_ratio >= 0");
     internal::require(min_part_group_vertices >= 3, "min_part_group_vertices",
                       min_part_group_vertices, "min_part_group_vertices >= 3");
     internal::require(internal::isNonNegative(growing_radius_m), "growing_radius_m",

@@ -146,21 +146,14 @@ std::vector<int> nearInGraph(const MatchView& view, int v, int hops)
     return out;
 }
 
-// The biggest set of the clique's pairs connected by links: (g1, m1) and (g2, m2) are linked
-// when g2 lies within `hops` view edges of g1 and m2 within `hops` of m1. Ties: the first found.
-std::vector<int> largestLinkedComponent(const std::vector<int>& clique,
-                                        const std::vector<Candidate>& cands, const MatchView& gv,
-                                        const MatchView& mv, int hops)
+// The biggest set of the given pairs connected by links (`linked(x, y)` on two candidates: (g1,
+// m1) and (g2, m2) are linked when g2 lies within support_hops view edges of g1 and m2 within
+// support_hops of m1). Ties: the first found. Returns the members in the given order.
+template <typename Linked>
+std::vector<int> largestLinkedComponent(const std::vector<int>& set,
+                                        const std::vector<Candidate>& cands, Linked linked)
 {
-    const std::size_t n = clique.size();
-    std::vector<std::vector<int>> near_gt(n), near_map(n);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        near_gt[i] = nearInGraph(gv, cands[clique[i]].gt, hops);
-        near_map[i] = nearInGraph(mv, cands[clique[i]].map, hops);
-    }
-    auto contains = [](const std::vector<int>& v, int x)
-    { return std::find(v.begin(), v.end(), x) != v.end(); };
+    const std::size_t n = set.size();
     std::vector<int> component(n, -1), best;
     for (std::size_t s = 0; s < n; ++s)
     {
@@ -171,8 +164,7 @@ std::vector<int> largestLinkedComponent(const std::vector<int>& clique,
         {
             const int i = members[k];
             for (std::size_t j = 0; j < n; ++j)
-                if (component[j] < 0 && contains(near_gt[i], cands[clique[j]].gt) &&
-                    contains(near_map[i], cands[clique[j]].map))
+                if (component[j] < 0 && linked(cands[set[i]], cands[set[j]]))
                 {
                     component[j] = int(s);
                     members.push_back(int(j));
@@ -182,7 +174,7 @@ std::vector<int> largestLinkedComponent(const std::vector<int>& clique,
     }
     std::sort(best.begin(), best.end());
     std::vector<int> out;
-    for (int k : best) out.push_back(clique[k]);
+    for (int k : best) out.push_back(set[k]);
     return out;
 }
 
@@ -206,64 +198,76 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     ConsistentMatch out;
     out.min_group_size = p.min_group_vertices;
 
-    // 1. Candidates: each gt vertex's k most similar map vertices, and each map vertex's k most
-    //    similar gt vertices, of a degree within max_degree_difference.
-    std::vector<std::uint8_t> is_cand(std::size_t(n_gt) * n_map, 0);
-    auto topK = [&](int n_rows, int n_cols, bool rows_are_gt)
-    {
-        for (int i = 0; i < n_rows; ++i)
-        {
-            if (!(rows_are_gt ? ctx.gt.v[i] : ctx.map.v[i]).active) continue;
-            std::vector<std::pair<double, int>> ranked;
-            for (int j = 0; j < n_cols; ++j)
-            {
-                const int a = rows_are_gt ? i : j, b = rows_are_gt ? j : i;
-                if (!ctx.gt.v[a].active || !ctx.map.v[b].active || !degreeOk(a, b)) continue;
-                const double s = S(a, b);
-                if (s >= p.min_candidate_similarity) ranked.emplace_back(-s, j);
-            }
-            const std::size_t k = std::min<std::size_t>(ranked.size(), p.candidates_per_vertex);
-            std::partial_sort(ranked.begin(), ranked.begin() + k, ranked.end());
-            for (std::size_t r = 0; r < k; ++r)
-            {
-                const int j = ranked[r].second;
-                is_cand[rows_are_gt ? std::size_t(i) * n_map + j : std::size_t(j) * n_map + i] = 1;
-            }
-        }
-    };
-    topK(n_gt, n_map, true);
-    topK(n_map, n_gt, false);
+    // 1. Candidates: each free gt vertex's k most similar free map vertices, and each free map
+    //    vertex's k most similar free gt vertices, of a degree within max_degree_difference.
+    //    Made again after every accepted group: once a part is matched its vertices no longer
+    //    crowd the other parts' lists (a part whose attributes changed at a break keeps its true
+    //    partners a few ranks down, doc/matching.md).
     std::vector<Candidate> cands;
-    for (int a = 0; a < n_gt; ++a)
-        for (int b = 0; b < n_map; ++b)
-            if (is_cand[std::size_t(a) * n_map + b])
-                cands.push_back({a, b, S(a, b), uncertainty(a, b)});
-    const int n = int(cands.size());
-    out.candidates = cands.size();
-
-    // 2. The pairwise consistency graph (TEASER++'s "translation and rotation invariant
-    //    measurements"): one-to-one, and distances that agree.
-    auto distanceTolerance = [&](const Candidate& x, const Candidate& y, double dg, double dm)
+    std::vector<std::uint8_t> adjacent;
+    int n = 0;
+    auto isFree = [&](int a, int b) { return ctx.gt_to_map[a] < 0 && ctx.map_to_gt[b] < 0; };
+    auto buildCandidates = [&]()
     {
-        return p.distance_tolerance_m + p.distance_tolerance_ratio * std::max(dg, dm) +
-               x.uncertainty_m + y.uncertainty_m;
-    };
-    std::vector<std::uint8_t> adjacent(std::size_t(n) * n, 0);
-    for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n; ++j)
+        std::vector<std::uint8_t> is_cand(std::size_t(n_gt) * n_map, 0);
+        auto topK = [&](int n_rows, int n_cols, bool rows_are_gt)
         {
-            const Candidate &x = cands[i], &y = cands[j];
-            if (x.gt == y.gt || x.map == y.map) continue;
-            const double dg = (pg(x.gt) - pg(y.gt)).norm(), dm = (pm(x.map) - pm(y.map)).norm();
-            if (std::abs(dg - dm) <= distanceTolerance(x, y, dg, dm))
-                adjacent[std::size_t(i) * n + j] = adjacent[std::size_t(j) * n + i] = 1;
-        }
+            for (int i = 0; i < n_rows; ++i)
+            {
+                if (!(rows_are_gt ? ctx.gt.v[i] : ctx.map.v[i]).active) continue;
+                std::vector<std::pair<double, int>> ranked;
+                for (int j = 0; j < n_cols; ++j)
+                {
+                    const int a = rows_are_gt ? i : j, b = rows_are_gt ? j : i;
+                    if (!ctx.gt.v[a].active || !ctx.map.v[b].active || !degreeOk(a, b) ||
+                        !isFree(a, b))
+                        continue;
+                    const double s = S(a, b);
+                    if (s >= p.min_candidate_similarity) ranked.emplace_back(-s, j);
+                }
+                const std::size_t k = std::min<std::size_t>(ranked.size(), p.candidates_per_vertex);
+                std::partial_sort(ranked.begin(), ranked.begin() + k, ranked.end());
+                for (std::size_t r = 0; r < k; ++r)
+                {
+                    const int j = ranked[r].second;
+                    is_cand[rows_are_gt ? std::size_t(i) * n_map + j : std::size_t(j) * n_map + i] =
+                        1;
+                }
+            }
+        };
+        topK(n_gt, n_map, true);
+        topK(n_map, n_gt, false);
+        cands.clear();
+        for (int a = 0; a < n_gt; ++a)
+            for (int b = 0; b < n_map; ++b)
+                if (is_cand[std::size_t(a) * n_map + b])
+                    cands.push_back({a, b, S(a, b), uncertainty(a, b)});
+        n = int(cands.size());
+        out.candidates = std::max(out.candidates, cands.size());
 
-    // 3. Groups: the maximum clique of the candidates still free, verified by a rigid fit
-    //    (distances alone accept a mirror image), accepted when big and wide enough; its
-    //    vertices are then taken and the next group searched (a broken map's other parts).
-    std::vector<std::uint8_t> excluded(n, 0);
-    MaxClique search(adjacent, n, std::size_t(p.max_clique_steps));
+        // 2. The pairwise consistency graph (TEASER++'s "translation and rotation invariant
+        //    measurements"): one-to-one, and distances that agree.
+        auto distanceTolerance = [&](const Candidate& x, const Candidate& y, double dg, double dm)
+        {
+            return p.distance_tolerance_m + p.distance_tolerance_ratio * std::max(dg, dm) +
+                   x.uncertainty_m + y.uncertainty_m;
+        };
+        adjacent.assign(std::size_t(n) * n, 0);
+        for (int i = 0; i < n; ++i)
+            for (int j = i + 1; j < n; ++j)
+            {
+                const Candidate &x = cands[i], &y = cands[j];
+                if (x.gt == y.gt || x.map == y.map) continue;
+                const double dg = (pg(x.gt) - pg(y.gt)).norm(), dm = (pm(x.map) - pm(y.map)).norm();
+                if (std::abs(dg - dm) <= distanceTolerance(x, y, dg, dm))
+                    adjacent[std::size_t(i) * n + j] = adjacent[std::size_t(j) * n + i] = 1;
+            }
+    };
+    buildCandidates();
+
+    // Pairs of rejected first-group cliques (gt * n_map + map), not tried again.
+    std::vector<std::uint8_t> rejected(std::size_t(n_gt) * n_map, 0);
+    auto pairKey = [&](const Candidate& c) { return std::size_t(c.gt) * n_map + c.map; };
     // On graphs too small for min_group_vertices (a bare plan of a few rooms) a group needs
     // min_isomorphism_share of the smaller graph's matchable vertices, and never fewer than 3,
     // as the paper's isomorphisms do (doc/matching.md).
@@ -272,131 +276,194 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
         std::min(p.min_group_vertices,
                  std::max(3, int(std::ceil(p.min_isomorphism_share * double(smaller) - 1e-9))));
     out.min_group_size = min_size;
-    for (int attempt = 0; attempt < 2 * p.max_groups && int(out.cores.size()) < p.max_groups;
-         ++attempt)
+    auto tolerance = [&](const Candidate& c, double dist)
+    { return p.distance_tolerance_m + c.uncertainty_m + p.distance_tolerance_ratio * dist; };
+    // Vertices within support_hops edges, sorted, for the links between pairs.
+    std::vector<std::vector<int>> near_gt(n_gt), near_map(n_map);
+    for (int a = 0; a < n_gt; ++a)
     {
-        std::vector<int> pool;
-        for (int i = 0; i < n; ++i)
-            if (!excluded[i] && ctx.gt_to_map[cands[i].gt] < 0 && ctx.map_to_gt[cands[i].map] < 0)
-                pool.push_back(i);
-        // Once a group is accepted the maps are known to show one place, and a further part
-        // (a broken map's small part) needs only min_part_group_vertices pairs, linked to an
-        // accepted group in both graphs (checked below).
-        const bool part = !out.cores.empty() && p.min_part_group_vertices < min_size;
-        const int need = part ? p.min_part_group_vertices : min_size;
-        std::vector<int> clique = search.run(pool);
-        out.clique_steps += search.steps();
-        if (int(clique.size()) < need) break;
-        for (int i : clique) excluded[i] = 1;
-        // Rigid fit. The clique holds pairs whose distances agree; near a break that mixes two
-        // parts (within a few metres of the pivot a turn of 10-30 degrees keeps distances within
-        // tolerance). A fit of the whole clique is then a compromise between the parts, and
-        // dropping its worst pairs can leave neither part. So the fit starts from the biggest
-        // consensus: the transform of each two well separated pairs, and the pairs it puts
-        // within their tolerance of their fitted place (position noise, plus the ratio over the
-        // distance for bending). Only for a further group: on the first, the consensus also
-        // finds chance groups between different buildings.
-        std::sort(clique.begin(), clique.end());
-        const std::vector<int> whole = clique;
-        auto tolerance = [&](const Candidate& c, double dist)
-        { return p.distance_tolerance_m + c.uncertainty_m + p.distance_tolerance_ratio * dist; };
-        {
-            std::vector<int> best;
-            double best_err = 0.0;
-            for (std::size_t i = 0; i < clique.size(); ++i)
-                for (std::size_t j = i + 1; j < clique.size(); ++j)
-                {
-                    const Candidate &ci = cands[clique[i]], &cj = cands[clique[j]];
-                    if ((pg(ci.gt) - pg(cj.gt)).norm() < p.min_consensus_baseline_m) continue;
-                    const Transform2D T =
-                        hornAlign({pg(ci.gt), pg(cj.gt)}, {pm(ci.map), pm(cj.map)});
-                    std::vector<int> in;
-                    double err_sum = 0.0;
-                    for (int k : clique)
-                    {
-                        const Candidate& c = cands[k];
-                        const double dist =
-                            std::min((pg(c.gt) - pg(ci.gt)).norm(), (pg(c.gt) - pg(cj.gt)).norm());
-                        const double err = (pg(c.gt) - T.apply(pm(c.map))).norm();
-                        if (err <= tolerance(c, dist)) in.push_back(k), err_sum += err;
-                    }
-                    if (in.size() > best.size() || (in.size() == best.size() && err_sum < best_err))
-                        best = std::move(in), best_err = err_sum;
-                }
-            if (!out.cores.empty() && int(best.size()) >= need) clique = best;
-        }
-        // Then drop the worst pair while any lies farther from its place under the fit of the
-        // set than its tolerance.
+        near_gt[a] = nearInGraph(ctx.gt, a, p.support_hops);
+        std::sort(near_gt[a].begin(), near_gt[a].end());
+    }
+    for (int b = 0; b < n_map; ++b)
+    {
+        near_map[b] = nearInGraph(ctx.map, b, p.support_hops);
+        std::sort(near_map[b].begin(), near_map[b].end());
+    }
+    auto linkedPairs = [&](const Candidate& x, const Candidate& y)
+    {
+        return std::binary_search(near_gt[x.gt].begin(), near_gt[x.gt].end(), y.gt) &&
+               std::binary_search(near_map[x.map].begin(), near_map[x.map].end(), y.map);
+    };
+    // Once a group is accepted the maps are known to show one place, and a further part (a
+    // broken map's small part) needs only min_part_group_vertices pairs, near an accepted group
+    // in the ground truth (checked in settle()).
+    auto needed = [&]()
+    {
+        return !out.cores.empty() && p.min_part_group_vertices < min_size
+                   ? p.min_part_group_vertices
+                   : min_size;
+    };
+    // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
+    // that drops the worst pair while any lies farther from its place than its tolerance; the
+    // biggest part linked in both graphs; then the size, extent, link and similarity rules.
+    // Returns false (and the group as far as it got) when it is not acceptable.
+    auto settle = [&](std::vector<int>& group)
+    {
+        const int need = needed();
         for (;;)
         {
+            if (int(group.size()) < need) return false;
             std::vector<Eigen::Vector2d> a, b;
-            for (int i : clique) a.push_back(pg(cands[i].gt)), b.push_back(pm(cands[i].map));
+            for (int i : group) a.push_back(pg(cands[i].gt)), b.push_back(pm(cands[i].map));
             const Transform2D T = hornAlign(a, b);
             Eigen::Vector2d centre = Eigen::Vector2d::Zero();
             for (const auto& x : a) centre += x;
             centre /= double(a.size());
             int worst = -1;
             double worst_excess = 0.0;
-            for (std::size_t k = 0; k < clique.size(); ++k)
+            for (std::size_t k = 0; k < group.size(); ++k)
             {
                 const double excess = (a[k] - T.apply(b[k])).norm() -
-                                      tolerance(cands[clique[k]], (a[k] - centre).norm());
+                                      tolerance(cands[group[k]], (a[k] - centre).norm());
                 if (excess > worst_excess) worst_excess = excess, worst = int(k);
             }
             if (worst < 0) break;
-            clique.erase(clique.begin() + worst);
-            if (int(clique.size()) < need) break;
+            group.erase(group.begin() + worst);
         }
-        if (int(clique.size()) < need) continue;
-        // Topological support: pairs (g1, m1), (g2, m2) are linked when g2 is within
-        // support_hops edges of g1 and m2 within support_hops edges of m1. A true group is a
-        // connected piece of both graphs; a set consistent by chance (different buildings made
-        // of the same corridors and rooms) is scattered. Only the biggest linked component
-        // stays.
-        clique = largestLinkedComponent(clique, cands, ctx.gt, ctx.map, p.support_hops);
-        if (int(clique.size()) < need) continue;
+        // Topological support: a true group is a connected piece of both graphs; a set
+        // consistent by chance (different buildings made of the same corridors and rooms) is
+        // scattered. Only the biggest linked component stays.
+        group = largestLinkedComponent(group, cands, linkedPairs);
+        if (int(group.size()) < need) return false;
         double extent = 0.0;
-        for (int i : clique)
-            for (int j : clique)
+        for (int i : group)
+            for (int j : group)
                 extent = std::max(extent, (pg(cands[i].gt) - pg(cands[j].gt)).norm());
-        if (extent < p.min_group_extent_m) continue;
-        if (int(clique.size()) < min_size)
+        if (extent < p.min_group_extent_m) return false;
+        if (!out.cores.empty())
         {
-            // A small part: one of its pairs lies within support_hops edges of an accepted
-            // group's pair in both graphs (the parts of a broken map meet at their cuts), and
-            // it is as similar as a small graph's group must be (below).
-            bool linked = false;
-            for (int i : clique)
-            {
-                const auto near_g = nearInGraph(ctx.gt, cands[i].gt, p.support_hops);
-                const auto near_m = nearInGraph(ctx.map, cands[i].map, p.support_hops);
-                for (int g : near_g)
-                    if (ctx.gt_to_map[g] >= 0 &&
-                        std::find(near_m.begin(), near_m.end(), ctx.gt_to_map[g]) != near_m.end())
-                        linked = true;
-            }
-            if (!linked) continue;
+            // A further part meets the accepted groups at its cut: where one of its
+            // ground-truth vertices lies within support_hops edges of an accepted group's
+            // vertex, their map partners lie about as far apart (a turn at the cut changes that
+            // distance by at most part_bridge_ratio of it; in the map the cut itself often
+            // severs the edges between them, so map edges are not asked for). A set that sits
+            // next to an accepted group in the ground truth but elsewhere in the map is a
+            // chance group (a hall's lattice of columns repeats). A small part needs such a
+            // bridge; a big one needs it only when it has a ground-truth neighbour at all (a
+            // graph piece of its own has none).
+            bool neighbour = false, bridge = false;
+            for (int i : group)
+                for (int g : near_gt[cands[i].gt])
+                {
+                    const int m = ctx.gt_to_map[g];
+                    if (m < 0) continue;
+                    neighbour = true;
+                    const double dg = (pg(g) - pg(cands[i].gt)).norm();
+                    const double dm = (pm(m) - pm(cands[i].map)).norm();
+                    bridge = bridge || std::abs(dg - dm) <= p.distance_tolerance_m +
+                                                                cands[i].uncertainty_m +
+                                                                p.part_bridge_ratio * dg;
+                }
+            if (int(group.size()) < min_size ? !bridge : (neighbour && !bridge)) return false;
         }
-        if (int(clique.size()) < p.min_group_vertices)
+        if (int(group.size()) < p.min_group_vertices)
         {
+            // As similar as a small graph's group must be (below).
             double mean_s = 0.0;
-            for (int i : clique) mean_s += S(cands[i].gt, cands[i].map);
-            if (mean_s / double(clique.size()) < p.min_small_group_similarity) continue;
+            for (int i : group) mean_s += S(cands[i].gt, cands[i].map);
+            if (mean_s / double(group.size()) < p.min_small_group_similarity) return false;
         }
-
-        // Accepted: the clique's other pairs go back to the pool (another part's pairs, taken
-        // into this clique by the distances near the pivot, may make that part's group). A
-        // rejected clique's pairs are not tried again (more tries, more chance groups between
-        // different buildings).
-        for (int i : whole) excluded[i] = 0;
+        return true;
+    };
+    // A further group (a broken map's other part): the best acceptable consensus of the pool.
+    // Near a break a clique mixes two parts (within a few metres of the pivot a turn of 10-30
+    // degrees keeps distances within tolerance) and ties between such cliques are common; a fit
+    // of a mixed clique is a compromise between the parts, dropping its worst pairs can leave
+    // neither, and a rejected clique takes the part's true pairs with it. So every two linked,
+    // consistent pairs at least min_consensus_baseline_m apart propose the rigid transform they
+    // define; the pairs it places within tolerance (position noise, plus the ratio over the
+    // distance for bending), one per vertex, are settled, and the biggest acceptable group wins
+    // (then the smallest placement error). Not for the first group: there the consensus also
+    // finds chance groups between different buildings (doc/matching.md).
+    auto bestConsensus = [&](const std::vector<int>& pool)
+    {
+        std::vector<int> best;
+        double best_err = 0.0;
+        std::vector<std::pair<double, int>> in;
+        for (std::size_t i = 0; i < pool.size(); ++i)
+            for (std::size_t j = i + 1; j < pool.size(); ++j)
+            {
+                const Candidate &ci = cands[pool[i]], &cj = cands[pool[j]];
+                if (!adjacent[std::size_t(pool[i]) * n + pool[j]] || !linkedPairs(ci, cj)) continue;
+                if ((pg(ci.gt) - pg(cj.gt)).norm() < p.min_consensus_baseline_m) continue;
+                const Transform2D T = hornAlign({pg(ci.gt), pg(cj.gt)}, {pm(ci.map), pm(cj.map)});
+                in.clear();
+                for (int k : pool)
+                {
+                    const Candidate& c = cands[k];
+                    const double dist =
+                        std::min((pg(c.gt) - pg(ci.gt)).norm(), (pg(c.gt) - pg(cj.gt)).norm());
+                    const double err = (pg(c.gt) - T.apply(pm(c.map))).norm();
+                    if (err <= tolerance(c, dist)) in.emplace_back(err, k);
+                }
+                if (in.size() < std::max<std::size_t>(best.size(), 3)) continue;
+                // One to one: the best placed pair of each vertex.
+                std::sort(in.begin(), in.end());
+                std::vector<int> kept;
+                for (const auto& [err, k] : in)
+                {
+                    bool clash = false;
+                    for (int q : kept)
+                        clash = clash || cands[q].gt == cands[k].gt || cands[q].map == cands[k].map;
+                    if (!clash) kept.push_back(k);
+                }
+                if (kept.size() < best.size()) continue;
+                std::sort(kept.begin(), kept.end());
+                if (!settle(kept)) continue;
+                double err_sum = 0.0;
+                for (int k : kept) err_sum += (pg(cands[k].gt) - T.apply(pm(cands[k].map))).norm();
+                if (kept.size() > best.size() || (kept.size() == best.size() && err_sum < best_err))
+                    best = std::move(kept), best_err = err_sum;
+            }
+        return best;
+    };
+    auto accept = [&](const std::vector<int>& group)
+    {
         std::vector<std::pair<int, int>> core;
-        for (int i : clique)
+        for (int i : group)
         {
             core.emplace_back(cands[i].gt, cands[i].map);
             ctx.gt_to_map[cands[i].gt] = cands[i].map;
             ctx.map_to_gt[cands[i].map] = cands[i].gt;
         }
         out.cores.push_back(std::move(core));
+        buildCandidates();
+    };
+    // 3. Groups. The first: the maximum clique of the free candidates, settled; a clique that
+    //    is not acceptable leaves the pool (more tries, more chance groups between different
+    //    buildings). Then, while groups are found, the best acceptable consensus of the pool:
+    //    each rigid part of a broken or bent map becomes its own group.
+    for (int attempt = 0; attempt < 2 * p.max_groups && out.cores.empty(); ++attempt)
+    {
+        std::vector<int> pool;
+        for (int i = 0; i < n; ++i)
+            if (!rejected[pairKey(cands[i])]) pool.push_back(i);
+        MaxClique search(adjacent, n, std::size_t(p.max_clique_steps));
+        std::vector<int> clique = search.run(pool);
+        out.clique_steps += search.steps();
+        if (int(clique.size()) < needed()) break;
+        for (int i : clique) rejected[pairKey(cands[i])] = 1;
+        std::sort(clique.begin(), clique.end());
+        if (settle(clique)) accept(clique);
+    }
+    while (!out.cores.empty() && int(out.cores.size()) < p.max_groups)
+    {
+        std::vector<int> pool(static_cast<std::size_t>(n));
+        std::iota(pool.begin(), pool.end(), 0);
+        const std::vector<int> group = bestConsensus(pool);
+        if (group.empty()) break;
+        accept(group);
     }
     if (out.cores.empty()) return out;
 
