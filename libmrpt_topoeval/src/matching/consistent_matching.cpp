@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <set>
 #include <tuple>
 
 #include "internal/horn.h"
@@ -391,6 +392,7 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
         std::vector<int> best;
         double best_err = 0.0;
         std::vector<std::pair<double, int>> in;
+        std::set<std::vector<int>> tried;
         for (std::size_t i = 0; i < pool.size(); ++i)
             for (std::size_t j = i + 1; j < pool.size(); ++j)
             {
@@ -420,6 +422,8 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                 }
                 if (kept.size() < best.size()) continue;
                 std::sort(kept.begin(), kept.end());
+                // Many pairs of one part propose the same set: settle it once.
+                if (!tried.insert(kept).second) continue;
                 if (!settle(kept)) continue;
                 double err_sum = 0.0;
                 for (int k : kept) err_sum += (pg(cands[k].gt) - T.apply(pm(cands[k].map))).norm();
