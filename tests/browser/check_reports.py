@@ -59,49 +59,39 @@ def check(cond, what):
     return cond
 
 
-def run(topoeval, *args):
+def run(topoeval, cwd, *args):
+    """Runs topoeval in `cwd`, so that the pages show the short paths given."""
     cmd = [topoeval] + list(args) + ["--force"]
-    res = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    if res.returncode not in (0,):
+    res = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if res.returncode != 0:
         print(res.stdout + res.stderr)
         raise SystemExit("topoeval failed (exit %d): %s" % (res.returncode, " ".join(cmd)))
 
 
 def write_reports(topoeval, share, work):
-    maps = os.path.join(share, "maps")
-    house = [os.path.join(maps, n + ".yaml") for n in ("map_2333d24", "map_6ccdcaa")]
-    synthetic = os.path.join(maps, "synthetic")
-    rawlog = os.path.join(share, "rawlog")
+    house = ["maps/map_2333d24.yaml", "maps/map_6ccdcaa.yaml"]
     # A map whose path reads like a script element: folder "<script>alert(1)<", file
-    # "script>.yaml" (a '/' cannot be part of a file name).
+    # "script>.yaml" (a '/' cannot be part of a file name), compared from WORK.
+    evil = "<script>alert(1)</script>.yaml"
     evil_dir = os.path.join(work, "<script>alert(1)<")
     os.makedirs(evil_dir, exist_ok=True)
-    shutil.copy(os.path.join(maps, "map_6ccdcaa.pgm"), evil_dir)
-    with open(os.path.join(maps, "map_6ccdcaa.yaml")) as src, \
-            open(os.path.join(evil_dir, "script>.yaml"), "w") as dst:
-        dst.write(src.read())
-    evil = "<script>alert(1)</script>.yaml"
-    pages = {}
-    pages["compare"] = os.path.join(work, "compare.html")
-    run(topoeval, "compare", os.path.join(synthetic, "campus.gridmap.gz"),
-        os.path.join(synthetic, "campus_broken_2.gridmap.gz"), "--html", pages["compare"])
-    pages["compare_escaped"] = os.path.join(work, "compare_escaped.html")
-    cwd = os.getcwd()
-    os.chdir(work)  # the map's path as given: <script>alert(1)</script>.yaml
-    try:
-        run(topoeval, "compare", house[0], evil, "--html", pages["compare_escaped"])
-    finally:
-        os.chdir(cwd)
-    pages["rank"] = os.path.join(work, "rank.html")
-    run(topoeval, "rank", house[0], house[1], house[0], os.path.join(work, evil), "--html",
-        pages["rank"])
-    pages["series"] = os.path.join(work, "series.html")
-    run(topoeval, "series", house[0], house[1], house[0], house[1], "--out",
+    for name in ("map_2333d24.yaml", "map_2333d24.pgm"):
+        shutil.copy(os.path.join(share, "maps", name), work)
+    shutil.copy(os.path.join(share, "maps", "map_6ccdcaa.pgm"), evil_dir)
+    shutil.copy(os.path.join(share, "maps", "map_6ccdcaa.yaml"),
+                os.path.join(evil_dir, "script>.yaml"))
+    pages = {k: os.path.join(work, k + ".html")
+             for k in ("compare", "compare_escaped", "rank", "series", "rawlog")}
+    run(topoeval, share, "compare", "maps/synthetic/campus.gridmap.gz",
+        "maps/synthetic/campus_broken_2.gridmap.gz", "--html", pages["compare"])
+    run(topoeval, work, "compare", "map_2333d24.yaml", evil, "--html", pages["compare_escaped"])
+    run(topoeval, share, "rank", house[0], house[1], house[0], os.path.join(work, evil),
+        "--html", pages["rank"])
+    run(topoeval, share, "series", house[0], house[1], house[0], house[1], "--out",
         os.path.join(work, "series"), "--html", pages["series"])
-    pages["rawlog"] = os.path.join(work, "rawlog.html")
-    run(topoeval, "rawlog", os.path.join(rawlog, "office_sim.rawlog.gz"), "--ground-truth",
-        os.path.join(rawlog, "office_gt.yaml"), "--every", "100", "--out",
-        os.path.join(work, "rawlog"), "--html", pages["rawlog"])
+    run(topoeval, share, "rawlog", "rawlog/office_sim.rawlog.gz", "--ground-truth",
+        "rawlog/office_gt.yaml", "--every", "100", "--out", os.path.join(work, "rawlog"),
+        "--html", pages["rawlog"])
     return pages, evil
 
 

@@ -254,17 +254,68 @@ void writeReport(JsonWriter& w, const TopologyGraph& gt, const TopologyGraph& ma
     w.endObject();
 }
 
-/** The thumbnail of a rank entry: both maps and the match lines, as drawMatch() draws them. */
+/** The thumbnail of a rank entry: both maps side by side at a common height, a line per
+ * matched pair (green isomorphism, red neighbour growing) and each matched vertex in its
+ * brokenness group's colour, as in drawQualityReport(), without the graphs: at thumbnail
+ * size they would hide the maps. */
 std::string thumbnail(const Grid& gt_grid, const TopologyGraph& gt, const Grid& grid,
-                      const TopologyGraph& map, const GraphMatch& match, int max_px)
+                      const TopologyGraph& map, const QualityReport& r, int max_px)
 {
-    DrawOptions draw;
-    draw.scale = 1;
-    draw.draw_ids = false;
-    draw.draw_boundary = false;
-    const internal::MatchPicture pic =
-        internal::drawMatchPicture(gt_grid, gt, grid, map, match, draw, "HTML report thumbnail");
-    return pngDataUrl(fitInto(pic.canvas, max_px));
+    const auto rows = [](const Grid& g) { return std::max<double>(1.0, g.getSizeY()); };
+    const auto cols = [](const Grid& g) { return std::max<double>(1.0, g.getSizeX()); };
+    const double gap = 0.05 * max_px;
+    // Common height h so that both maps and the gap fit max_px wide and high.
+    const double h =
+        std::max(8.0, std::min<double>(max_px, (max_px - gap) / (cols(gt_grid) / rows(gt_grid) +
+                                                                 cols(grid) / rows(grid))));
+    std::vector<cv::Mat> parts;
+    std::vector<internal::PixelMapper> px;
+    for (const Grid* g : {&gt_grid, &grid})
+    {
+        const double s = h / rows(*g);
+        cv::Mat grey = g->getSizeX() > 0 && g->getSizeY() > 0
+                           ? internal::renderGrid(*g)
+                           : cv::Mat(1, 1, CV_8UC1, cv::Scalar(255));
+        cv::resize(grey, grey, internal::pictureSize(*g, s), 0, 0, cv::INTER_AREA);
+        cv::Mat bgr;
+        cv::cvtColor(grey, bgr, cv::COLOR_GRAY2BGR);
+        parts.push_back(bgr);
+        px.emplace_back(*g, s);
+    }
+    const int x_map = parts[0].cols + static_cast<int>(gap);
+    cv::Mat canvas(std::max(parts[0].rows, parts[1].rows), x_map + parts[1].cols, CV_8UC3,
+                   internal::kWhite);
+    parts[0].copyTo(canvas(cv::Rect(0, 0, parts[0].cols, parts[0].rows)));
+    parts[1].copyTo(canvas(cv::Rect(x_map, 0, parts[1].cols, parts[1].rows)));
+
+    std::vector<int> group(gt.vertices.size(), -1);
+    for (std::size_t gi = 0; gi < r.brokenness.groups.size(); ++gi)
+        for (const int v : r.brokenness.groups[gi].gt_vertices)
+            group[static_cast<std::size_t>(v)] = static_cast<int>(gi);
+    const auto at = [&](int side, const Eigen::Vector2d& p)
+    {
+        const cv::Point2d q = px[static_cast<std::size_t>(side)].toPixel(p);
+        return cv::Point(static_cast<int>(std::lround((q.x + (side ? x_map : 0)) * 16)),
+                         static_cast<int>(std::lround(q.y * 16)));
+    };
+    for (const VertexPair& p : r.match.pairs)
+        cv::line(canvas, at(0, gt.vertices[static_cast<std::size_t>(p.ground_truth)].position_m),
+                 at(1, map.vertices[static_cast<std::size_t>(p.map)].position_m),
+                 p.stage == MatchStage::Isomorphism ? internal::kIsomorphismLine
+                                                    : internal::kGrowingLine,
+                 1, cv::LINE_AA, 4);
+    for (const VertexPair& p : r.match.pairs)
+    {
+        const int g = group[static_cast<std::size_t>(p.ground_truth)];
+        const cv::Scalar& colour = g < 0 ? internal::kNoGroupColour
+                                         : internal::kGroupColours[static_cast<std::size_t>(g) %
+                                                                   internal::kGroupColours.size()];
+        for (const auto& [side, pos] :
+             {std::make_pair(0, gt.vertices[static_cast<std::size_t>(p.ground_truth)].position_m),
+              std::make_pair(1, map.vertices[static_cast<std::size_t>(p.map)].position_m)})
+            cv::circle(canvas, at(side, pos), 2 * 16, colour, cv::FILLED, cv::LINE_AA, 4);
+    }
+    return pngDataUrl(canvas);
 }
 }  // namespace
 
@@ -401,7 +452,7 @@ HtmlEntry makeHtmlEntry(const std::string& name, const Grid& gt_grid, const Topo
     writeReport(w, gt_graph, map_graph, report);
     if (with_thumbnail)
         w.key("thumbnail")
-            .value(thumbnail(gt_grid, gt_graph, grid, map_graph, report.match, opts.thumbnail_px));
+            .value(thumbnail(gt_grid, gt_graph, grid, map_graph, report, opts.thumbnail_px));
     // The map last: its picture is most of the entry.
     std::string map_json = makeHtmlMap(name, grid, map_graph, opts).json;
     w.endObject();
