@@ -502,10 +502,13 @@
   function seriesPage() {
     const entries = data.entries;
     const n = entries.length;
+    // Time if every snapshot has one, else the entry (rawlog) or the number in the map's
+    // name (series) if they increase, else the snapshot's step.
     const useTime = n > 0 && entries.every(e => e.time_s !== null && e.time_s !== undefined);
-    const xOf = e => useTime ? e.time_s : e.entry;
-    const xLabel = useTime ? 'time [s]' : (data.kind === 'rawlog' ? 'rawlog entry' :
-                                                                    'map number');
+    const useEntry = !useTime && entries.every((e, i) => i === 0 || e.entry > entries[i - 1].entry);
+    const xOf = e => useTime ? e.time_s : useEntry ? e.entry : e.step;
+    const xLabel = useTime ? 'time [s]' : !useEntry ? 'snapshot' :
+                   data.kind === 'rawlog' ? 'rawlog entry' : 'map number';
     const Wp = 900, Hp = 300, L = 44, R = 16, T = 12, B = 34;
     const xs = entries.map(xOf);
     let x0 = Math.min(...xs), x1 = Math.max(...xs);
@@ -521,10 +524,14 @@
       t.textContent = (k / 5).toFixed(1);
       plot.appendChild(t);
     }
-    for (let k = 0; k <= 6; ++k) {
-      const x = x0 + (x1 - x0) * k / 6;
+    // Ticks at 1, 2 or 5 x 10^k, whole numbers unless the axis is time.
+    const raw = (x1 - x0) / 6, mag = Math.pow(10, Math.floor(Math.log10(raw)));
+    let tick = [1, 2, 5, 10].map(f => f * mag).find(t => t >= raw);
+    if (!useTime) tick = Math.max(1, Math.round(tick));
+    const decimals = Math.max(0, -Math.floor(Math.log10(tick)));
+    for (let x = Math.ceil(x0 / tick) * tick; x <= x1 + 1e-9; x += tick) {
       const t = sv('text', {x: px(x), y: Hp - B + 16, 'text-anchor': 'middle'});
-      t.textContent = Math.abs(x1 - x0) >= 10 ? x.toFixed(0) : x.toFixed(1);
+      t.textContent = x.toFixed(decimals);
       plot.appendChild(t);
     }
     const xl = sv('text', {x: (L + Wp - R) / 2, y: Hp - 4, 'text-anchor': 'middle'});
