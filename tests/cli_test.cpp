@@ -1022,3 +1022,49 @@ TEST_F(Cli, SeriesOverSavedMaps)
     EXPECT_TRUE(fs::exists(out + "/scores.png"));
     expectOneLineError(run("series " + q(*gt) + " " + q(folder) + " -o " + q(out)), 3, "--force");
 }
+
+TEST_F(Cli, HtmlReportsAreWrittenAtomicallyAndNeverOverwrittenWithoutForce)
+{
+    const std::string maps = shareDir() + "/maps/";
+    const std::string gt = maps + "map_2333d24.yaml", map = maps + "map_6ccdcaa.yaml";
+    if (!fs::exists(gt) || !fs::exists(map)) GTEST_SKIP() << "the share/ samples are not there";
+    const ScopedTempDir dir_tmp("cli_html");
+    const std::string& dir = dir_tmp.path;
+    const std::string html = dir + "/report.html";
+
+    const RunResult c = run("compare " + q(gt) + " " + q(map) + " --html " + q(html));
+    ASSERT_EQ(c.code, 0) << c.err;
+    EXPECT_TRUE(contains(c.out, "wrote       " + html));
+    const std::string page = readText(html);
+    EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
+    EXPECT_TRUE(contains(page, "<body data-kind=\"compare\">"));
+    EXPECT_EQ(listing(dir).size(), 1u);  // no temporary file left
+
+    // Never replaced without --force, by any verb; the file stays as it was.
+    writeText(html, "mine");
+    expectOneLineError(run("compare " + q(gt) + " " + q(map) + " --html " + q(html)), 3,
+                       html + ": exists; pass --force");
+    expectOneLineError(run("rank " + q(gt) + " " + q(map) + " --html " + q(html)), 3,
+                       html + ": exists; pass --force");
+    expectOneLineError(
+        run("series " + q(gt) + " " + q(map) + " -o " + q(dir + "/s") + " --html " + q(html)), 3,
+        html + ": exists; pass --force");
+    EXPECT_EQ(readText(html), "mine");
+    EXPECT_FALSE(fs::exists(dir + "/s"));
+
+    // A page is a .html file, and no output names another's file.
+    expectOneLineError(run("compare " + q(gt) + " " + q(map) + " --html " + q(dir + "/r.txt")), 2,
+                       "use a .html file name");
+    expectOneLineError(run("rank " + q(gt) + " " + q(map) + " --csv " + q(dir + "/r.html") +
+                           " --html " + q(dir + "/r.html")),
+                       2, "name the same file");
+
+    const RunResult r =
+        run("rank " + q(gt) + " " + q(map) + " " + q(gt) + " --html " + q(html) + " --force");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(contains(readText(html), "<body data-kind=\"rank\">"));
+    const RunResult s = run("series " + q(gt) + " " + q(map) + " " + q(gt) + " -o " +
+                            q(dir + "/s") + " --html " + q(html) + " --force");
+    ASSERT_EQ(s.code, 0) << s.err;
+    EXPECT_TRUE(contains(readText(html), "<body data-kind=\"series\">"));
+}

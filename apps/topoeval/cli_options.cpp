@@ -1,6 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include "cli_options.h"
 
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/output.h>
 
@@ -25,12 +26,30 @@ std::string fmt(const char* format, double v)
     return buf;
 }
 
-bool endsWithPng(const std::string& path)
+namespace
+{
+std::string lowerExtension(const std::string& path)
 {
     std::string ext = fs::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return ext == ".png";
+    return ext;
+}
+}  // namespace
+
+bool endsWithPng(const std::string& path) { return lowerExtension(path) == ".png"; }
+
+bool endsWithHtml(const std::string& path)
+{
+    const std::string ext = lowerExtension(path);
+    return ext == ".html" || ext == ".htm";
+}
+
+std::string iniText(const Parameters& params)
+{
+    mrpt::config::CConfigFileMemory ini;
+    params.saveToConfigFile(ini);
+    return ini.getContent();
 }
 
 LoadedMap loadMapTimed(const std::string& path, const MapLoadOptions& opts, double& ms)
@@ -93,6 +112,12 @@ void StandardOptions::addJson(const std::string& help)
                                                             "OUT.json", m_cl.cmd());
 }
 
+void StandardOptions::addHtml(const std::string& help)
+{
+    m_html = std::make_unique<TCLAP::ValueArg<std::string>>("", "html", help, false, "", "OUT.html",
+                                                            m_cl.cmd());
+}
+
 void StandardOptions::addThreads(const std::string& help)
 {
     m_threads =
@@ -149,7 +174,8 @@ std::pair<std::string, std::string> StandardOptions::gtAndMap(
 }
 
 std::vector<std::string> StandardOptions::writeOutputs(const std::string& json_text,
-                                                       const mrpt::img::CImage& picture) const
+                                                       const mrpt::img::CImage& picture,
+                                                       const std::string& html_text) const
 {
     std::vector<std::string> written;
     if (!json().empty())
@@ -162,6 +188,11 @@ std::vector<std::string> StandardOptions::writeOutputs(const std::string& json_t
         writePngAtomic(image(), picture, force());
         written.push_back(image());
     }
+    if (!html().empty())
+    {
+        writeFileAtomic(html(), html_text, force());
+        written.push_back(html());
+    }
     return written;
 }
 
@@ -169,6 +200,7 @@ bool StandardOptions::force() const { return m_force && m_force->getValue(); }
 std::string StandardOptions::json() const { return m_json ? m_json->getValue() : ""; }
 std::string StandardOptions::image() const { return m_image ? m_image->getValue() : ""; }
 std::string StandardOptions::config() const { return m_config ? m_config->getValue() : ""; }
+std::string StandardOptions::html() const { return m_html ? m_html->getValue() : ""; }
 
 void StandardOptions::checkJsonImage() const
 {
@@ -178,6 +210,11 @@ void StandardOptions::checkJsonImage() const
         throw m_cl.usageError("--image needs a file name");
     if (!image().empty() && !endsWithPng(image()))
         throw m_cl.usageError("--image " + image() + ": pictures are PNG; use a .png file name");
+    if (m_html && m_html->isSet() && html().empty())
+        throw m_cl.usageError("--html needs a file name");
+    if (!html().empty() && !endsWithHtml(html()))
+        throw m_cl.usageError("--html " + html() +
+                              ": the report is a web page; use a .html file name");
 }
 
 OutputList StandardOptions::outputs() const
@@ -185,6 +222,7 @@ OutputList StandardOptions::outputs() const
     OutputList out;
     if (!json().empty()) out.emplace_back("--json", json());
     if (!image().empty()) out.emplace_back("--image", image());
+    if (!html().empty()) out.emplace_back("--html", html());
     return out;
 }
 

@@ -32,6 +32,11 @@ std::string fmt(const char* format, double v);
 
 /** Whether `path` ends in ".png", in any case. */
 bool endsWithPng(const std::string& path);
+/** Whether `path` ends in ".html" or ".htm", in any case. */
+bool endsWithHtml(const std::string& path);
+
+/** The parameters as the INI text `topoeval config --write` would give for them. */
+std::string iniText(const Parameters& params);
 
 /** Loads a map, storing the time it took in `ms`. \throws InputError */
 LoadedMap loadMapTimed(const std::string& path, const MapLoadOptions& opts, double& ms);
@@ -66,6 +71,8 @@ public:
     void addForce(const std::string& help = "Replace existing output files.");
     void addImage(const std::string& help);
     void addJson(const std::string& help);
+    /** --html OUT.html: the verb's HTML report (doc/report.md). */
+    void addHtml(const std::string& help);
     void addThreads(const std::string& help =
                         "Worker threads for ICP similarity, 0 = all cores; overrides "
                         "[VertexSimilarity] threads. Results do not depend on it.");
@@ -81,15 +88,17 @@ public:
     std::string json() const;    //!< "" if not given
     std::string image() const;   //!< "" if not given
     std::string config() const;  //!< "" if not given
+    std::string html() const;    //!< "" if not given
 
     /** The two maps of addGtAndMap(), checked; `too_many_hint` ends the message for more
      * than two. \throws UsageError */
     std::pair<std::string, std::string> gtAndMap(const std::string& too_many_hint = "") const;
 
-    /** --json and --image: a file name each, the picture a .png. \throws UsageError */
+    /** --json, --image and --html: a file name each, the picture a .png, the report a .html
+     * or .htm. \throws UsageError */
     void checkJsonImage() const;
 
-    /** The --json and --image outputs given, as (option, file). */
+    /** The --json, --image and --html outputs given, as (option, file). */
     OutputList outputs() const;
 
     /** --threads and --similarity checked, then the parameters of --config with
@@ -101,16 +110,17 @@ public:
      * OutputError */
     void checkOutputPaths(const std::vector<std::string>& inputs) const;
 
-    /** Writes `json_text` to --json and `picture` to --image, those given, in that order;
-     * returns the files written. \throws OutputError */
+    /** Writes `json_text` to --json, `picture` to --image and `html_text` to --html, those
+     * given, in that order; returns the files written. \throws OutputError */
     std::vector<std::string> writeOutputs(const std::string& json_text,
-                                          const mrpt::img::CImage& picture) const;
+                                          const mrpt::img::CImage& picture,
+                                          const std::string& html_text = {}) const;
 
 private:
     VerbCommandLine& m_cl;
     std::unique_ptr<TCLAP::UnlabeledMultiArg<std::string>> m_maps;
     std::unique_ptr<TCLAP::SwitchArg> m_force;
-    std::unique_ptr<TCLAP::ValueArg<std::string>> m_image, m_json, m_similarity, m_config;
+    std::unique_ptr<TCLAP::ValueArg<std::string>> m_image, m_json, m_html, m_similarity, m_config;
     std::unique_ptr<TCLAP::ValueArg<int>> m_threads;
     std::unique_ptr<TCLAP::ValueArg<double>> m_resolution;
 };

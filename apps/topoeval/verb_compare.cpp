@@ -5,6 +5,7 @@
 
 #include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/output.h>
 #include <mrpt_topoeval/report_json.h>
@@ -53,7 +54,10 @@ int verbCompare(int argc, char** argv)
         "each brokenness group and the time per step). --json writes everything, including the "
         "match (the same object as 'topoeval match --json') and the effective parameters; "
         "--image draws both maps with the match lines and each matched vertex coloured and "
-        "numbered by its brokenness group (the paper's Fig. 7). A map that matches nothing "
+        "numbered by its brokenness group (the paper's Fig. 7); --html writes one "
+        "self-contained web page with the scores, both maps with their graphs and the match "
+        "(zoom, pan, hover), the messages and the parameters (doc/report.md). A map that matches "
+        "nothing "
         "gives coverage 0 and quality 0 with a warning, and exit code 0. Existing files are "
         "never replaced without --force; outputs are written only after everything succeeded. "
         "Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 output error.");
@@ -61,6 +65,7 @@ int verbCompare(int argc, char** argv)
     StandardOptions opts(cl);
     // Declared in reverse order of the usage line (TCLAP lists the last added first).
     opts.addForce();
+    opts.addHtml("Write the report as one self-contained web page to this file.");
     opts.addImage("Draw both maps, the match lines and the brokenness groups into this PNG file.");
     opts.addJson("Write the report as JSON to this file.");
     // No short form: TCLAP keeps -v for --version.
@@ -124,8 +129,21 @@ int verbCompare(int argc, char** argv)
     report.timing_ms = timing_ms;
     std::string json_text;
     if (!json_path.empty()) json_text = reportToJson(gt_graph, map_graph, report, params, true);
+    std::string html_text;
+    if (!opts.html().empty())
+    {
+        HtmlReportContent page;
+        page.kind = HtmlReportContent::Kind::Compare;
+        page.title = "compare " + map.file + " against " + gt.file;
+        page.generator = versionLine();
+        page.parameters_ini = iniText(params);
+        page.ground_truth = makeHtmlMap(gt.file, gt.grid, gt_graph);
+        page.entries.push_back(
+            makeHtmlEntry(map.file, gt.grid, gt_graph, map.grid, map_graph, report, false));
+        html_text = renderHtmlReport(page);
+    }
 
-    const std::vector<std::string> written = opts.writeOutputs(json_text, picture);
+    const std::vector<std::string> written = opts.writeOutputs(json_text, picture, html_text);
 
     std::ostream& os = std::cout;
     printSide(os, "ground truth  ", gt, gt_graph);

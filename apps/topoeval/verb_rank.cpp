@@ -5,6 +5,7 @@
 #include <mrpt/core/exceptions.h>
 #include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/output.h>
 
@@ -43,15 +44,18 @@ struct MapResult
     bool internal_error = false;  //!< A bug or resource failure rather than a bad file.
     std::string error;
     QualityReport report;
+    std::string name;  //!< As the table and the page show it.
+    HtmlEntry html;    //!< Its part of the --html page, if asked for.
 
     bool matched() const { return ok && !report.match.pairs.empty(); }
 };
 
-/** Loads and evaluates one map against the (shared, read-only) ground truth and its graph.
- * Never throws: the outcome, good or bad, is in the result, so one bad map does not stop the
+/** Loads and evaluates one map against the (shared, read-only) ground truth and its graph,
+ * and with `html` makes its part of the page (pictures encoded here, in the worker). Never
+ * throws: the outcome, good or bad, is in the result, so one bad map does not stop the
  * others. */
 void evaluateOne(const TopologyGraph& gt_graph, const mrpt::maps::COccupancyGridMap2D& gt_grid,
-                 const Parameters& params, MapResult& res)
+                 const Parameters& params, bool html, MapResult& res)
 {
     try
     {
@@ -60,6 +64,8 @@ void evaluateOne(const TopologyGraph& gt_graph, const mrpt::maps::COccupancyGrid
         res.report = evaluate(gt_graph, gt_grid, m.grid, params, &graph);
         if (graph.vertices.empty() && graph.warnings.empty())
             res.report.messages.push_back("map: the Topology Graph is empty");
+        if (html)
+            res.html = makeHtmlEntry(res.name, gt_grid, gt_graph, m.grid, graph, res.report, true);
         res.ok = true;
     }
     catch (const InputError& e)
@@ -234,17 +240,17 @@ void printTable(std::ostream& os, const std::vector<MapResult>& results, const R
                                              "short", "medium", "long",    "broken",   "r.cov",
                                              "r.acc", "r.cons", "r.broken"};
     std::vector<std::vector<std::string>> rows;
-    const std::vector<std::string> names = displayNames(results);
     for (std::size_t i = 0; i < results.size(); ++i)
     {
         const MapResult& m = results[i];
+        const std::string& name = m.name;
         if (!m.ok)
         {
-            rows.push_back({names[i], "error: " + m.error});
+            rows.push_back({name, "error: " + m.error});
             continue;
         }
         const QualityReport& r = m.report;
-        rows.push_back({names[i], rk.overall[i], fixed(r.quality, 3), fixed(r.coverage, 3),
+        rows.push_back({name, rk.overall[i], fixed(r.quality, 3), fixed(r.coverage, 3),
                         fixed(r.relative_accuracy.score, 3), consistencyScore(m, 0, false),
                         consistencyScore(m, 1, false), consistencyScore(m, 2, false),
                         m.matched() ? std::to_string(r.brokenness.degree) : "-", rk.coverage[i],
@@ -292,14 +298,19 @@ int verbRank(int argc, char** argv)
         "consistency scores (short, medium, long), brokenness degree, and its rank by each "
         "attribute; equal values share a rank ('1-2'). Maps are evaluated in parallel, the "
         "results do not depend on the number of threads and are listed in the order given. "
-        "--csv writes the table with a header row. A map that cannot be read is listed with "
+        "--csv writes the table with a header row; --html one self-contained web page with the "
+        "table (sortable), a thumbnail of each map's match and each map's compare view "
+        "(doc/report.md). A map that cannot be read is listed with "
         "its error, the others are still ranked, and the exit code is 2 (1 for an internal "
         "error). Existing files are never replaced without --force. Exit codes: 0 ok, 1 "
         "internal error, 2 bad input or usage, 3 output error.");
     TCLAP::CmdLine& cmd = cl.cmd();
     // Declared in reverse order of the usage line (TCLAP lists the last added first).
     StandardOptions opts(cl);
-    opts.addForce("Replace an existing CSV file.");
+    opts.addForce("Replace existing output files.");
+    opts.addHtml(
+        "Write the ranking as one self-contained web page to this file: the table, a thumbnail "
+        "and the compare view of each map.");
     TCLAP::ValueArg<std::string> csv_arg("", "csv",
                                          "Write the table as CSV (header row first) to this file.",
                                          false, "", "OUT.csv", cmd);
@@ -328,11 +339,16 @@ int verbRank(int argc, char** argv)
     const std::string csv_path = csv_arg.getValue();
     const bool force = opts.force();
     if (csv_arg.isSet() && csv_path.empty()) throw cl.usageError("--csv needs a file name");
+    opts.checkJsonImage();
+    const std::string html_path = opts.html();
+    OutputList outputs = opts.outputs();
+    if (!csv_path.empty()) outputs.emplace_back("--csv", csv_path);
+    checkDistinctOutputs(cl, outputs);
     const Parameters params = opts.parameters();
 
     std::vector<std::string> inputs = args;
     inputs.push_back(opts.config());
-    if (!csv_path.empty()) checkOutputPath(csv_path, force, inputs);
+    for (const auto& out : outputs) checkOutputPath(out.second, force, inputs);
 
     // The ground truth and its graph once, shared read-only by every evaluation: nothing to
     // rank without it.
@@ -341,6 +357,8 @@ int verbRank(int argc, char** argv)
 
     std::vector<MapResult> results(args.size() - 1);
     for (std::size_t i = 0; i < results.size(); ++i) results[i].file = args[i + 1];
+    const std::vector<std::string> names = displayNames(results);
+    for (std::size_t i = 0; i < results.size(); ++i) results[i].name = names[i];
 
     // The thread budget: maps at once, and what is left for each one's ICP similarity (so N
     // maps with ICP do not start N x cores threads).
@@ -355,7 +373,7 @@ int verbRank(int argc, char** argv)
     const auto work = [&]
     {
         for (std::size_t i = next++; i < results.size(); i = next++)
-            evaluateOne(gt_graph, gt.grid, worker_params, results[i]);
+            evaluateOne(gt_graph, gt.grid, worker_params, !html_path.empty(), results[i]);
     };
     std::vector<std::thread> pool;
     try
@@ -375,6 +393,22 @@ int verbRank(int argc, char** argv)
 
     const Ranking rk = rankMaps(results);
     if (!csv_path.empty()) writeFileAtomic(csv_path, csvText(results, rk), force);
+    if (!html_path.empty())
+    {
+        HtmlReportContent page;
+        page.kind = HtmlReportContent::Kind::Rank;
+        page.title = "rank " + std::to_string(results.size()) + " maps against " + gt.file;
+        page.generator = versionLine();
+        page.parameters_ini = iniText(params);
+        page.ground_truth = makeHtmlMap(gt.file, gt.grid, gt_graph);
+        page.ranks = rk.overall;
+        for (MapResult& m : results)
+        {
+            page.entries.push_back(m.ok ? std::move(m.html) : makeHtmlErrorEntry(m.name, m.error));
+            for (const auto& msg : m.report.messages) page.messages.push_back(m.name + ": " + msg);
+        }
+        writeFileAtomic(html_path, renderHtmlReport(page), force);
+    }
 
     std::ostream& os = std::cout;
     os << "ground truth  " << gt.file << " (" << gt.format << ")\n";
@@ -383,6 +417,7 @@ int verbRank(int argc, char** argv)
        << fixed(msSince(t_run) / 1000.0, 2) << " s\n\n";
     printTable(os, results, rk);
     if (!csv_path.empty()) os << "wrote         " << csv_path << "\n";
+    if (!html_path.empty()) os << "wrote         " << html_path << "\n";
     flushStdout();
 
     int code = kExitOk;

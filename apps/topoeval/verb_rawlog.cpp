@@ -6,6 +6,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/output.h>
 #include <mrpt_topoeval/report_json.h>
@@ -141,7 +142,9 @@ int verbRawlog(int argc, char** argv)
         "without odometry and objects ICP-SLAM does not use are counted. Outputs in DIR: "
         "scores.csv (one row per snapshot, written as they come), report.json, scores.png, "
         "final.gridmap.gz, final.png; with --snapshots each snapshot's map and match picture "
-        "in DIR/snapshots/. Existing outputs are never replaced without --force. The rawlog is "
+        "in DIR/snapshots/; --html one self-contained web page with the scores over time, each "
+        "snapshot's map and match and the final map (doc/report.md). Existing outputs are never "
+        "replaced without --force. The rawlog is "
         "read up to its first scan before DIR is created: bad input leaves nothing behind. "
         "Ctrl-C or a truncated/corrupt rawlog stops reading; the map built so far is scored "
         "and every output written. Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 "
@@ -154,6 +157,9 @@ int verbRawlog(int argc, char** argv)
         "Print the default ICP-SLAM configuration (an icp-slam INI) and exit.", cmd);
     StandardOptions std_opts(cl);
     std_opts.addForce();
+    std_opts.addHtml(
+        "Write one self-contained web page to this file: the scores over time, each snapshot's "
+        "map and match (a slider), the final map.");
     TCLAP::ValueArg<std::size_t> max_entries_arg(
         "", "max-entries", "Read at most this many rawlog entries (0 = all).", false, 0, "N", cmd);
     TCLAP::SwitchArg snapshots_arg(
@@ -195,8 +201,12 @@ int verbRawlog(int argc, char** argv)
     const Parameters params = std_opts.parameters();
     // Outputs are checked first, as by every verb, but nothing is created until the inputs
     // have passed their checks: bad input must not leave an empty DIR behind.
-    checkOutputFolder(dir, kOutputNames, force,
-                      {rawlog_path, gt_path, slam_arg.getValue(), std_opts.config()});
+    const std::vector<std::string> inputs = {rawlog_path, gt_path, slam_arg.getValue(),
+                                             std_opts.config()};
+    checkOutputFolder(dir, kOutputNames, force, inputs);
+    std_opts.checkJsonImage();
+    const std::string html_path = std_opts.html();
+    if (!html_path.empty()) checkOutputPath(html_path, force, inputs);
     std::error_code ec;  // the non-throwing overload: a bad name is bad input, not a crash
     if (!fs::exists(rawlog_path, ec)) throw InputError(rawlog_path + ": no such file");
     const LoadedMap gt = loadMap(gt_path, params.map_load);
@@ -205,7 +215,7 @@ int verbRawlog(int argc, char** argv)
     opts.every_scans = every_arg.getValue();
     opts.max_entries = max_entries_arg.getValue();
     opts.slam_config_file = slam_arg.getValue();
-    opts.keep_snapshot_graphs = snapshots_arg.getValue();
+    opts.keep_snapshot_graphs = snapshots_arg.getValue() || !html_path.empty();
     RawlogScorer scorer(opts, params);
     // The SLAM configuration, and the rawlog up to its first scan: what the run would refuse
     // as bad input (not a rawlog, empty, cut in its first entry, no scan) is refused now.
@@ -221,11 +231,23 @@ int verbRawlog(int argc, char** argv)
     ScoresCsv csv(out("scores.csv"));
     std::vector<std::string> written;
     ScoreRow last_row;
+    std::vector<HtmlEntry> html_entries;
+    // Snapshots are pictured smaller than the final map: a long run has many.
+    HtmlReportOptions snapshot_html;
+    snapshot_html.max_map_px = 1024;
+    const auto snapshotName = [](const ScoreRow& row) {
+        return "snapshot " + std::to_string(row.step) + " (entry " + std::to_string(row.entry) +
+               ")";
+    };
     scorer.onSnapshot(
         [&](const Snapshot& s)
         {
             csv.append(s.row);
             last_row = s.row;
+            if (!html_path.empty())
+                html_entries.push_back(makeHtmlEntry(snapshotName(s.row), gt.grid, s.gt_graph,
+                                                     s.grid, s.map_graph, s.report, false, &s.row,
+                                                     snapshot_html));
             if (!snapshots_arg.getValue()) return;
             char stem[32];
             std::snprintf(stem, sizeof(stem), "step_%04d", s.row.step);
@@ -240,8 +262,7 @@ int verbRawlog(int argc, char** argv)
     Progress progress;
     scorer.onProgress([&](const RawlogProgress& p) { progress.update(p, false); });
 
-    mrpt::config::CConfigFileMemory topo_ini;
-    params.saveToConfigFile(topo_ini);
+    const std::string topo_ini = iniText(params);
     const auto configuration_json = [&](const std::string& slam_ini)
     {
         std::ostringstream os;
@@ -250,7 +271,7 @@ int verbRawlog(int argc, char** argv)
            << ", \"slam_config_file\": " << jsonQuote(opts.slam_config_file)
            << ", \"slam_ini\": " << jsonQuote(slam_ini)
            << ", \"topoeval_config_file\": " << jsonQuote(std_opts.config())
-           << ", \"topoeval_ini\": " << jsonQuote(topo_ini.getContent()) << "}";
+           << ", \"topoeval_ini\": " << jsonQuote(topo_ini) << "}";
         return os.str();
     };
     const auto messages_json = [](const std::vector<std::string>& messages)
@@ -335,6 +356,28 @@ int verbRawlog(int argc, char** argv)
        << ", \"total\": " << jsonNumber(res.total_ms) << "}\n}\n";
     writeFileAtomic(out("report.json"), js.str(), force);
     written.push_back(out("report.json"));
+    if (!html_path.empty())
+    {
+        HtmlReportContent page;
+        page.kind = HtmlReportContent::Kind::Rawlog;
+        page.title = "rawlog " + rawlog_path + " against " + gt_path;
+        page.generator = versionLine();
+        page.parameters_ini = topo_ini;
+        page.extra_ini = res.effective_slam_ini;
+        page.messages = res.messages;
+        if (res.stop != RawlogStop::EndOfFile)
+            page.messages.push_back("stopped at entry " + std::to_string(res.stop_entry) + " (" +
+                                    toString(res.stop) + "): " + res.stop_message);
+        page.ground_truth = makeHtmlMap(gt_path, gt.grid, res.final_gt_graph);
+        // The final map at full size (the last snapshot is the final map).
+        if (!html_entries.empty() && !res.rows.empty())
+            html_entries.back() = makeHtmlEntry(
+                snapshotName(res.rows.back()), gt.grid, res.final_gt_graph, res.final_grid,
+                res.final_map_graph, res.final_report, false, &res.rows.back());
+        page.entries = std::move(html_entries);
+        writeFileAtomic(html_path, renderHtmlReport(page), force);
+        written.push_back(html_path);
+    }
 
     // Summary.
     const RawlogStats& s = res.stats;

@@ -5,6 +5,7 @@
 #include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/RawlogScorer.h>
+#include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/output.h>
 
@@ -117,13 +118,18 @@ int verbSeries(int argc, char** argv)
         "200 steps). MAP may be a folder: its maps sorted by name (an image with a YAML beside "
         "it counts once). The 'entry' column is the last number in each map's file name "
         "(mapbuilt_00200 -> 200), or its position; time_s and scans are empty/0. Outputs in "
-        "DIR: scores.csv (row by row), scores.png, report.json. Existing outputs are never "
+        "DIR: scores.csv (row by row), scores.png, report.json; --html one self-contained web "
+        "page with the scores over time and each map's match (doc/report.md). Existing outputs are "
+        "never "
         "replaced without --force. Every map is read before DIR is created: a bad one leaves "
         "nothing behind. Exit codes: 0 ok, 1 internal error, 2 bad input or usage, 3 "
         "output error.");
     TCLAP::CmdLine& cmd = cl.cmd();
     StandardOptions opts(cl);
     opts.addForce();
+    opts.addHtml(
+        "Write one self-contained web page to this file: the scores over time and each map "
+        "with its match (a slider over the maps).");
     TCLAP::ValueArg<std::string> out_arg("o", "out", "Output folder (default: series-scores).",
                                          false, "series-scores", "DIR", cmd);
     opts.addResolution();
@@ -160,6 +166,9 @@ int verbSeries(int argc, char** argv)
     inputs.push_back(opts.config());
     checkOutputFolder(dir, {"scores.csv", "scores.csv.part", "scores.png", "report.json"}, force,
                       inputs);
+    opts.checkJsonImage();
+    const std::string html_path = opts.html();
+    if (!html_path.empty()) checkOutputPath(html_path, force, inputs);
     const LoadedMap gt = loadMap(gt_path, params.map_load);
     // Every map is read once before the output folder is created, so that a bad one anywhere
     // in the list is bad input with nothing written. Reading is a small part of a map's
@@ -173,6 +182,7 @@ int verbSeries(int argc, char** argv)
     const auto out = [&](const std::string& name) { return folder.file(name); };
     ScoresCsv csv(out("scores.csv"));
     std::vector<ScoreRow> rows;
+    std::vector<HtmlEntry> html_entries;
     std::ostringstream files;
     try
     {
@@ -180,7 +190,8 @@ int verbSeries(int argc, char** argv)
         {
             const LoadedMap m = loadMap(maps[i], params.map_load);
             const auto t0 = Clock::now();
-            const QualityReport report = evaluate(gt_graph, gt.grid, m.grid, params);
+            TopologyGraph graph;
+            const QualityReport report = evaluate(gt_graph, gt.grid, m.grid, params, &graph);
             ScoreRow row = scoreRowFromReport(report);
             row.step = static_cast<int>(i) + 1;
             row.entry = numberInName(maps[i], i);
@@ -188,6 +199,9 @@ int verbSeries(int argc, char** argv)
             row.scoring_ms = msSince(t0);
             csv.append(row);
             rows.push_back(row);
+            if (!html_path.empty())
+                html_entries.push_back(
+                    makeHtmlEntry(maps[i], gt.grid, gt_graph, m.grid, graph, report, false, &row));
             files << (i ? ", " : "") << "{\"file\": " << jsonQuote(maps[i])
                   << ", \"scores\": " << scoreRowJson(row) << "}";
             std::cerr << "topoeval: series: " << (i + 1) << "/" << maps.size() << " " << maps[i]
@@ -208,6 +222,17 @@ int verbSeries(int argc, char** argv)
     writePngAtomic(out("scores.png"),
                    drawScorePlot(rows, "maps vs " + fs::path(gt_path).filename().string()), force);
     writeFileAtomic(out("report.json"), reportJson(gt_path, files.str(), ""), force);
+    if (!html_path.empty())
+    {
+        HtmlReportContent page;
+        page.kind = HtmlReportContent::Kind::Series;
+        page.title = "series of " + std::to_string(maps.size()) + " maps against " + gt_path;
+        page.generator = versionLine();
+        page.parameters_ini = iniText(params);
+        page.ground_truth = makeHtmlMap(gt_path, gt.grid, gt_graph);
+        page.entries = std::move(html_entries);
+        writeFileAtomic(html_path, renderHtmlReport(page), force);
+    }
 
     std::cout << "ground truth  " << gt_path << " (" << gt.format << ")\n";
     std::cout << "maps          " << maps.size() << "\n";
@@ -217,6 +242,7 @@ int verbSeries(int argc, char** argv)
     std::cout << buf;
     for (const char* name : {"scores.csv", "scores.png", "report.json"})
         std::cout << "wrote         " << out(name) << "\n";
+    if (!html_path.empty()) std::cout << "wrote         " << html_path << "\n";
     flushStdout();
     return kExitOk;
 }

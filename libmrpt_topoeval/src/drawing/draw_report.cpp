@@ -22,26 +22,12 @@ namespace mrpt_topoeval
 namespace
 {
 using Grid = mrpt::maps::COccupancyGridMap2D;
+using internal::kGroupColours;
+using internal::kNoGroupColour;
 using internal::kShift;
+using internal::kUnmatchedColour;
 using internal::LegendEntry;
 using internal::MatchPanel;
-
-// Group colours (BGR), distinct from the match lines (green, red), the missing ring
-// (magenta), grey (no group) and white (unmatched); group 0, the largest, is blue.
-const std::array<cv::Scalar, 10> kGroupColours = {
-    cv::Scalar(180, 119, 31),   // blue
-    cv::Scalar(14, 127, 255),   // orange
-    cv::Scalar(189, 103, 148),  // purple
-    cv::Scalar(207, 190, 23),   // cyan
-    cv::Scalar(75, 86, 140),    // brown
-    cv::Scalar(0, 200, 230),    // yellow
-    cv::Scalar(191, 129, 247),  // pink
-    cv::Scalar(140, 30, 20),    // navy
-    cv::Scalar(128, 128, 0),    // teal
-    cv::Scalar(0, 128, 128),    // olive
-};
-const cv::Scalar kNoGroupColour(160, 160, 160);
-const cv::Scalar kUnmatchedColour(255, 255, 255);
 
 const cv::Scalar& groupColour(int group)
 {

@@ -42,8 +42,17 @@ const cv::Scalar& vertexColour(const TopoVertex& v)
     }
 }
 
-/** The grid as grey classes, one pixel per cell, top row = max y. Occupied and free use the
- * graph builder's default probability thresholds, so the picture shows what it works on. */
+void drawPolyline(cv::Mat& img, const PixelMapper& px, const std::vector<Eigen::Vector2d>& pts,
+                  bool closed, const cv::Scalar& colour, int thickness)
+{
+    if (pts.size() < 2) return;
+    std::vector<cv::Point> line;
+    line.reserve(pts.size());
+    for (const auto& p : pts) line.push_back(px.fixedPoint(p));
+    cv::polylines(img, line, closed, colour, thickness, cv::LINE_AA, kShift);
+}
+}  // namespace
+
 cv::Mat renderGrid(const mrpt::maps::COccupancyGridMap2D& grid)
 {
     using Grid = mrpt::maps::COccupancyGridMap2D;
@@ -68,17 +77,6 @@ cv::Mat renderGrid(const mrpt::maps::COccupancyGridMap2D& grid)
     }
     return img;
 }
-
-void drawPolyline(cv::Mat& img, const PixelMapper& px, const std::vector<Eigen::Vector2d>& pts,
-                  bool closed, const cv::Scalar& colour, int thickness)
-{
-    if (pts.size() < 2) return;
-    std::vector<cv::Point> line;
-    line.reserve(pts.size());
-    for (const auto& p : pts) line.push_back(px.fixedPoint(p));
-    cv::polylines(img, line, closed, colour, thickness, cv::LINE_AA, kShift);
-}
-}  // namespace
 
 PixelMapper::PixelMapper(const mrpt::maps::COccupancyGridMap2D& grid, double px_per_cell)
     : m_x_min(grid.getXMin()),

@@ -11,6 +11,7 @@
 #include <mrpt_topoeval/drawing.h>
 
 #include <Eigen/Core>
+#include <array>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -74,6 +75,11 @@ cv::Size pictureSize(const mrpt::maps::COccupancyGridMap2D& grid, double px_per_
 cv::Mat drawGraphOverGrid(const mrpt::maps::COccupancyGridMap2D& grid, const TopologyGraph& graph,
                           double px_per_cell, bool draw_ids, bool draw_boundary);
 
+/** The grid as grey classes, one pixel per cell, top row = max y (8-bit grey: occupied 0,
+ * free 255, unknown 150). Occupied and free use the graph builder's default probability
+ * thresholds, so the picture shows what it works on. */
+cv::Mat renderGrid(const mrpt::maps::COccupancyGridMap2D& grid);
+
 /** One entry of a legend strip: a sample mark and its label. */
 struct LegendEntry
 {
@@ -104,6 +110,24 @@ cv::Mat stackVertically(const std::vector<cv::Mat>& parts);
 inline const cv::Scalar kIsomorphismLine(0, 190, 0);
 inline const cv::Scalar kGrowingLine(0, 0, 235);
 inline const cv::Scalar kMissingRing(200, 0, 200);  // magenta: no graph colour uses it
+
+// Brokenness groups (drawQualityReport() and the HTML report): distinct from the match lines
+// (green, red), the missing ring (magenta), grey (no group) and white (unmatched); group 0, the
+// largest, is blue. Colours repeat after 10 groups.
+inline const std::array<cv::Scalar, 10> kGroupColours = {
+    cv::Scalar(180, 119, 31),   // blue
+    cv::Scalar(14, 127, 255),   // orange
+    cv::Scalar(189, 103, 148),  // purple
+    cv::Scalar(207, 190, 23),   // cyan
+    cv::Scalar(75, 86, 140),    // brown
+    cv::Scalar(0, 200, 230),    // yellow
+    cv::Scalar(191, 129, 247),  // pink
+    cv::Scalar(140, 30, 20),    // navy
+    cv::Scalar(128, 128, 0),    // teal
+    cv::Scalar(0, 128, 128),    // olive
+};
+inline const cv::Scalar kNoGroupColour(160, 160, 160);
+inline const cv::Scalar kUnmatchedColour(255, 255, 255);
 
 /** One of the two maps of a match picture: where it sits and how to find its vertices. */
 struct MatchPanel
