@@ -109,7 +109,11 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     for (const auto& p : report.match.pairs)
     {
         ++s.matched;
-        if (!isTrue(p.ground_truth, p.map)) continue;
+        if (!isTrue(p.ground_truth, p.map))
+        {
+            ++(p.stage == MatchStage::NeighbourGrowing ? s.false_grown : s.false_core);
+            continue;
+        }
         ++s.true_pairs;
         if (truth.part_of)
             ++true_per_part[truth.part_of(

@@ -42,6 +42,8 @@ struct CaseScore
      * within the pair tolerance of it. */
     std::size_t gt_with_counterpart = 0;
     std::size_t matched = 0, true_pairs = 0;
+    /** False pairs made by a group's core (isomorphism) and by growing (neighbour growing). */
+    std::size_t false_core = 0, false_grown = 0;
     double precision = 0.0;  //!< true / matched (NaN when nothing was matched).
     double recall = 0.0;     //!< true / gt_with_counterpart (NaN when there is no counterpart).
     int brokenness_found = 0;
