@@ -490,77 +490,156 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     //    unmatched map vertex, within two edges of the partners, that the rigid fit of the
     //    group's nearby pairs puts nearest to it (within its tolerance). Every group proposes,
     //    the best proposals are taken first, until nothing changes.
+    //    Then once more without the links (`geometric`): a vertex of a graph piece no group
+    //    reaches (a hall's inner piece, cut off by its walls) is paired with any free map vertex
+    //    the fit puts within its tolerance, when the pair is as similar as a small group must
+    //    be (min_small_group_similarity).
     std::vector<int> group_of_gt(n_gt, -1);
     for (std::size_t g = 0; g < out.cores.size(); ++g)
         for (const auto& [a, b] : out.cores[g]) group_of_gt[a] = int(g);
-    for (int round = 0; round < n_gt; ++round)
-    {
-        struct Proposal
+    for (const bool geometric : {false, true})
+        for (int round = 0; round < n_gt; ++round)
         {
-            double score;
-            int gt, map, group;
-        };
-        std::vector<Proposal> proposals;
-        for (int a = 0; a < n_gt; ++a)
-        {
-            if (!ctx.gt.v[a].active || ctx.gt_to_map[a] >= 0) continue;
-            for (std::size_t g = 0; g < out.cores.size(); ++g)
+            struct Proposal
             {
-                // The group's pairs near a, nearest first.
-                std::vector<std::pair<double, int>> near;
-                std::vector<int> map_near;
-                bool linked = false;
-                for (int x = 0; x < n_gt; ++x)
+                double score;
+                int gt, map, group;
+            };
+            std::vector<Proposal> proposals;
+            for (int a = 0; a < n_gt; ++a)
+            {
+                if (!ctx.gt.v[a].active || ctx.gt_to_map[a] >= 0) continue;
+                for (std::size_t g = 0; g < out.cores.size(); ++g)
                 {
-                    if (group_of_gt[x] != int(g)) continue;
-                    const double d = (pg(x) - pg(a)).norm();
-                    if (d <= p.growing_radius_m) near.emplace_back(d, x);
-                }
-                if (near.size() < 2) continue;
-                for (int x : nearInGraph(ctx.gt, a, 2))
-                    if (group_of_gt[x] == int(g) && x != a)
+                    // The group's pairs near a, nearest first.
+                    std::vector<std::pair<double, int>> near;
+                    std::vector<int> map_near;
+                    bool linked = false;
+                    for (int x = 0; x < n_gt; ++x)
                     {
-                        linked = true;
-                        for (int y : nearInGraph(ctx.map, ctx.gt_to_map[x], 2))
-                            map_near.push_back(y);
+                        if (group_of_gt[x] != int(g)) continue;
+                        const double d = (pg(x) - pg(a)).norm();
+                        if (d <= p.growing_radius_m) near.emplace_back(d, x);
                     }
-                if (!linked) continue;
-                std::sort(near.begin(), near.end());
-                if (near.size() > 8) near.resize(8);
-                std::vector<Eigen::Vector2d> ga, mb;
-                for (const auto& [d, x] : near)
-                    ga.push_back(pg(x)), mb.push_back(pm(ctx.gt_to_map[x]));
-                const Transform2D T = hornAlign(ga, mb);
-                std::sort(map_near.begin(), map_near.end());
-                map_near.erase(std::unique(map_near.begin(), map_near.end()), map_near.end());
-                for (int b : map_near)
-                {
-                    if (!ctx.map.v[b].active || ctx.map_to_gt[b] >= 0 || !degreeOk(a, b)) continue;
-                    if (S(a, b) < p.min_consistent_growing_similarity) continue;
-                    const double tol = p.position_tolerance_m + uncertainty(a, b) +
-                                       p.distance_tolerance_ratio * near.front().first;
-                    const double err = (T.apply(pm(b)) - pg(a)).norm();
-                    if (err > tol) continue;
-                    proposals.push_back({(1.0 - err / tol) + S(a, b), a, b, int(g)});
+                    if (near.size() < 2) continue;
+                    for (int x : nearInGraph(ctx.gt, a, 2))
+                        if (group_of_gt[x] == int(g) && x != a)
+                        {
+                            linked = true;
+                            for (int y : nearInGraph(ctx.map, ctx.gt_to_map[x], 2))
+                                map_near.push_back(y);
+                        }
+                    if (geometric)
+                    {
+                        map_near.resize(std::size_t(n_map));
+                        std::iota(map_near.begin(), map_near.end(), 0);
+                    }
+                    else if (!linked)
+                        continue;
+                    std::sort(near.begin(), near.end());
+                    if (near.size() > 8) near.resize(8);
+                    std::vector<Eigen::Vector2d> ga, mb;
+                    for (const auto& [d, x] : near)
+                        ga.push_back(pg(x)), mb.push_back(pm(ctx.gt_to_map[x]));
+                    const Transform2D T = hornAlign(ga, mb);
+                    std::sort(map_near.begin(), map_near.end());
+                    map_near.erase(std::unique(map_near.begin(), map_near.end()), map_near.end());
+                    for (int b : map_near)
+                    {
+                        if (!ctx.map.v[b].active || ctx.map_to_gt[b] >= 0 || !degreeOk(a, b))
+                            continue;
+                        if (S(a, b) < (geometric ? p.min_small_group_similarity
+                                                 : p.min_consistent_growing_similarity))
+                            continue;
+                        const double tol = p.position_tolerance_m + uncertainty(a, b) +
+                                           p.distance_tolerance_ratio * near.front().first;
+                        const double err = (T.apply(pm(b)) - pg(a)).norm();
+                        if (err > tol) continue;
+                        proposals.push_back({(1.0 - err / tol) + S(a, b), a, b, int(g)});
+                    }
                 }
             }
+            if (proposals.empty()) break;
+            std::sort(proposals.begin(), proposals.end(),
+                      [](const Proposal& x, const Proposal& y)
+                      { return std::tie(y.score, x.gt, x.map) < std::tie(x.score, y.gt, y.map); });
+            // Take only the best proposal per vertex in this round; the fits then change.
+            int taken = 0;
+            for (const Proposal& pr : proposals)
+            {
+                if (ctx.gt_to_map[pr.gt] >= 0 || ctx.map_to_gt[pr.map] >= 0) continue;
+                ctx.gt_to_map[pr.gt] = pr.map;
+                ctx.map_to_gt[pr.map] = pr.gt;
+                group_of_gt[pr.gt] = pr.group;
+                out.grown.push_back({pr.gt, pr.map, pr.group});
+                ++taken;
+            }
+            if (taken == 0) break;
         }
-        if (proposals.empty()) break;
-        std::sort(proposals.begin(), proposals.end(),
-                  [](const Proposal& x, const Proposal& y)
-                  { return std::tie(y.score, x.gt, x.map) < std::tie(x.score, y.gt, y.map); });
-        // Take only the best proposal per vertex in this round; the fits then change.
-        int taken = 0;
-        for (const Proposal& pr : proposals)
+
+    // 5. Polish: a group's pairs are consistent within tolerance, so of two close twins (two
+    //    junctions 0.3 m apart, a room's two dead ends) the group keeps whichever it met first.
+    //    Under the group's own rigid fit, a pair takes a free map vertex near its partner, or
+    //    two pairs of the group swap partners, when that lowers the group's squared placement
+    //    error (degrees within max_degree_difference, similarity at least
+    //    min_consistent_growing_similarity). The fit is held fixed, so every change lowers the
+    //    error and the loop ends.
+    for (std::size_t g = 0; g < out.cores.size(); ++g)
+    {
+        std::vector<std::pair<int, int*>> refs;  // gt vertex, its map partner in out
+        for (auto& [a, b] : out.cores[g]) refs.emplace_back(a, &b);
+        for (auto& gp : out.grown)
+            if (gp.isomorphism == int(g)) refs.emplace_back(gp.gt, &gp.map);
+        if (refs.size() < 3) continue;
+        std::vector<Eigen::Vector2d> ga, mb;
+        for (const auto& [a, b] : refs) ga.push_back(pg(a)), mb.push_back(pm(*b));
+        const Transform2D T = hornAlign(ga, mb);
+        auto err2 = [&](int a, int b) { return (pg(a) - T.apply(pm(b))).squaredNorm(); };
+        auto fits = [&](int a, int b) {
+            return ctx.map.v[b].active && degreeOk(a, b) &&
+                   S(a, b) >= p.min_consistent_growing_similarity;
+        };
+        for (bool changed = true; changed;)
         {
-            if (ctx.gt_to_map[pr.gt] >= 0 || ctx.map_to_gt[pr.map] >= 0) continue;
-            ctx.gt_to_map[pr.gt] = pr.map;
-            ctx.map_to_gt[pr.map] = pr.gt;
-            group_of_gt[pr.gt] = pr.group;
-            out.grown.push_back({pr.gt, pr.map, pr.group});
-            ++taken;
+            changed = false;
+            for (std::size_t i = 0; i < refs.size(); ++i)
+            {
+                const int a = refs[i].first, b = *refs[i].second;
+                double best_gain = 1e-9;
+                int best_b = -1;
+                std::size_t best_j = refs.size();
+                for (int b2 : near_map[b])
+                {
+                    if (b2 == b || !fits(a, b2)) continue;
+                    const int owner = ctx.map_to_gt[b2];
+                    double gain = 0.0;
+                    std::size_t j = refs.size();
+                    if (owner < 0)
+                        gain = err2(a, b) - err2(a, b2);
+                    else
+                    {
+                        for (std::size_t k = 0; k < refs.size(); ++k)
+                            if (refs[k].first == owner) j = k;
+                        if (j == refs.size() || !fits(owner, b)) continue;
+                        gain = err2(a, b) + err2(owner, b2) - err2(a, b2) - err2(owner, b);
+                    }
+                    if (gain > best_gain) best_gain = gain, best_b = b2, best_j = j;
+                }
+                if (best_b < 0) continue;
+                if (best_j < refs.size())
+                {
+                    *refs[best_j].second = b;
+                    ctx.gt_to_map[refs[best_j].first] = b;
+                    ctx.map_to_gt[b] = refs[best_j].first;
+                }
+                else
+                    ctx.map_to_gt[b] = -1;
+                *refs[i].second = best_b;
+                ctx.gt_to_map[a] = best_b;
+                ctx.map_to_gt[best_b] = a;
+                changed = true;
+            }
         }
-        if (taken == 0) break;
     }
     return out;
 }
