@@ -443,3 +443,33 @@ TEST(QualityEvaluator, SmallTurnedPartCountsWhenClearlySeparate)
     // Turned by 3 degrees (0.26 m at 5 m), the star is not clearly separate: no break.
     EXPECT_EQ(evaluateMatch(g, turned(3.0), match).brokenness.degree, 0);
 }
+
+// Issue 11, quality that measures the map: the scores of a small matched part do not speak for
+// the whole map. The campus matched with itself on a share of its vertices only: accuracy,
+// consistency and brokenness are perfect either way; below min_trusted_coverage (0.5) the
+// quality shrinks with sqrt(coverage / 0.5), above it the plain weighted mean stays.
+TEST(QualityEvaluator, QualityOfASmallMatchedPartShrinksWithItsCoverage)
+{
+    const TopologyGraph g = buildTopologyGraph(makeCampusMap());
+    QualityParameters paper;
+    paper.min_trusted_coverage = 0.0;
+    for (double share : {0.2, 0.35, 0.8})
+    {
+        GraphMatch match;
+        std::vector<int> ids;
+        for (const auto& v : g.vertices)
+            if (!v.spurious) ids.push_back(v.id);
+        const std::size_t n = static_cast<std::size_t>(std::lround(share * double(ids.size())));
+        for (std::size_t i = 0; i < n; ++i)
+            match.pairs.push_back({ids[i], ids[i], MatchStage::Isomorphism, 1.0, 0});
+        match.isomorphism = n;
+        match.isomorphism_sizes = {n};
+        const QualityReport r = evaluateMatch(g, g, match);
+        const QualityReport plain = evaluateMatch(g, g, match, paper);
+        ASSERT_NEAR(r.coverage, share, 0.01);
+        const double expected =
+            plain.quality * (r.coverage < 0.5 ? std::sqrt(r.coverage / 0.5) : 1.0);
+        EXPECT_NEAR(r.quality, expected, 1e-12) << share;
+        if (share < 0.5) EXPECT_LT(r.quality, plain.quality) << share;
+    }
+}

@@ -51,6 +51,10 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     double weight_relative_accuracy = 1.0;
     double weight_consistency = 1.0;
     double weight_brokenness = 1.0;
+    /** Accuracy, consistency and brokenness describe the matched part only: below this
+     * coverage the quality is multiplied by sqrt(coverage / this). 0 = the paper's plain
+     * weighted mean [ratio]. */
+    double min_trusted_coverage = 0.5;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
     void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;

@@ -39,6 +39,7 @@ void QualityParameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
     MRPT_LOAD_CONFIG_VAR(weight_relative_accuracy, double, c, s);
     MRPT_LOAD_CONFIG_VAR(weight_consistency, double, c, s);
     MRPT_LOAD_CONFIG_VAR(weight_brokenness, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(min_trusted_coverage, double, c, s);
 }
 
 void QualityParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -71,6 +72,9 @@ void QualityParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                  "[1] weight of the mean local consistency score in quality");
     MRPT_SAVE_CONFIG_VAR_COMMENT(weight_brokenness,
                                  "[1] weight of the brokenness score in quality");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        min_trusted_coverage,
+        "[ratio] below this coverage quality x sqrt(coverage / this) (0 = paper)");
 }
 
 void QualityParameters::validate() const
@@ -110,6 +114,9 @@ void QualityParameters::validate() const
                       weight_consistency, "weight_consistency >= 0");
     internal::require(internal::isNonNegative(weight_brokenness), "weight_brokenness",
                       weight_brokenness, "weight_brokenness >= 0");
+    internal::require(internal::isNonNegative(min_trusted_coverage) && min_trusted_coverage <= 1.0,
+                      "min_trusted_coverage", min_trusted_coverage,
+                      "0 <= min_trusted_coverage <= 1");
     internal::require(
         weight_coverage + weight_relative_accuracy + weight_consistency + weight_brokenness > 0.0,
         "weight_coverage", weight_coverage, "at least one weight > 0");
@@ -550,6 +557,13 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
         (p.weight_coverage * r.coverage + p.weight_relative_accuracy * r.relative_accuracy.score +
          p.weight_consistency * consistency + p.weight_brokenness * r.brokenness.score) /
         wsum;
+    // Accuracy, consistency and brokenness are measured on the matched part only; when that is
+    // a small share of the ground truth they say little about the whole map (one part of a map
+    // broken three times, a chance match with another building). Below min_trusted_coverage the
+    // quality shrinks with the square root of the share matched, as the confidence in an
+    // estimate from a sample does with the sample's size (ours; doc/quality.md).
+    if (p.min_trusted_coverage > 0.0 && r.coverage < p.min_trusted_coverage)
+        r.quality *= std::sqrt(r.coverage / p.min_trusted_coverage);
     return r;
 }
 
