@@ -9,7 +9,7 @@
 
 #include <benchmark/benchmark.h>
 #include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 #include <sys/resource.h>
 
 #include <algorithm>

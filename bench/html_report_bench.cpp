@@ -12,7 +12,7 @@
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/html_report.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 
 #include <cmath>
 #include <map>

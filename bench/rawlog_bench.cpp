@@ -4,7 +4,7 @@
 
 #include <benchmark/benchmark.h>
 #include <mrpt_topoeval/RawlogScorer.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 
 #include "test_paths.h"
 

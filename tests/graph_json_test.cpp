@@ -11,12 +11,12 @@
 #include <string>
 
 // The writer is internal to the library; its tests live with its main user.
-#include "../libmrpt_topoeval/src/internal/JsonWriter.h"
+#include <mrpt_topoeval/json/JsonWriter.h>
 
 using mrpt_topoeval::GraphBuildStats;
 using mrpt_topoeval::graphToJson;
+using mrpt_topoeval::JsonWriter;
 using mrpt_topoeval::TopologyGraph;
-using mrpt_topoeval::internal::JsonWriter;
 
 namespace
 {

@@ -9,7 +9,7 @@
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/errors.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/output.h>
 
 #include <algorithm>

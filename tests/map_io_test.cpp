@@ -20,7 +20,7 @@
 #include <mrpt/poses/CPosePDFParticles.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_topoeval/errors.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -34,7 +34,7 @@
 #include <string>
 #include <vector>
 
-#include "../libmrpt_topoeval/src/internal/serialized_layout.h"  // header-only, internal
+#include "../libmrpt_topoeval/src/maps/serialized_layout.h"  // header-only, internal
 #include "test_paths.h"
 
 namespace fs = std::filesystem;

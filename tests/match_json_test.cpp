@@ -11,7 +11,7 @@
 #include <vector>
 
 // The writer is internal to the library; `compare` embeds the same "matches" object.
-#include "../libmrpt_topoeval/src/internal/match_json_internal.h"
+#include "../libmrpt_topoeval/src/json/match_json_internal.h"
 
 using mrpt_topoeval::GraphMatch;
 using mrpt_topoeval::MatchStage;
@@ -174,7 +174,7 @@ TEST(MatchJson, MatchesObjectIsTheOneCompareEmbeds)
 {
     // Written by itself into another document, the "matches" object is the same text as in
     // matchToJson(), so `compare` writes the same format.
-    using mrpt_topoeval::internal::JsonWriter;
+    using mrpt_topoeval::JsonWriter;
     JsonWriter w;
     w.beginObject();
     w.key("matches");

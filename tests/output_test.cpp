@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/json/JsonWriter.h>
 #include <mrpt_topoeval/output.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -181,12 +182,12 @@ TEST(Output, WritesPng)
 // may hold any byte: the text must stay valid JSON and UTF-8.
 TEST(Output, JsonQuoteEscapesAndKeepsUtf8Valid)
 {
-    EXPECT_EQ(mrpt_topoeval::jsonQuote("plain"), "\"plain\"");
-    EXPECT_EQ(mrpt_topoeval::jsonQuote("a\"b\\c"), "\"a\\\"b\\\\c\"");
-    EXPECT_EQ(mrpt_topoeval::jsonQuote("l1\nl2\t\x01"), "\"l1\\nl2\\t\\u0001\"");
-    EXPECT_EQ(mrpt_topoeval::jsonQuote("caf\xC3\xA9.png"), "\"caf\xC3\xA9.png\"")
+    EXPECT_EQ(mrpt_topoeval::JsonWriter::quote("plain"), "\"plain\"");
+    EXPECT_EQ(mrpt_topoeval::JsonWriter::quote("a\"b\\c"), "\"a\\\"b\\\\c\"");
+    EXPECT_EQ(mrpt_topoeval::JsonWriter::quote("l1\nl2\t\x01"), "\"l1\\nl2\\t\\u0001\"");
+    EXPECT_EQ(mrpt_topoeval::JsonWriter::quote("caf\xC3\xA9.png"), "\"caf\xC3\xA9.png\"")
         << "valid UTF-8 is kept";
-    EXPECT_EQ(mrpt_topoeval::jsonQuote("bad\xFF.png"), "\"bad\xEF\xBF\xBD.png\"")
+    EXPECT_EQ(mrpt_topoeval::JsonWriter::quote("bad\xFF.png"), "\"bad\xEF\xBF\xBD.png\"")
         << "a stray byte is U+FFFD";
-    EXPECT_EQ(mrpt_topoeval::jsonQuote(std::string("nul\0x", 5)), "\"nul\\u0000x\"");
+    EXPECT_EQ(mrpt_topoeval::JsonWriter::quote(std::string("nul\0x", 5)), "\"nul\\u0000x\"");
 }

@@ -11,7 +11,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/errors.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 
 #include <atomic>
 #include <cstdio>

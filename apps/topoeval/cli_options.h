@@ -6,7 +6,7 @@
 // their help texts and checks, timing and number formatting, and timed map loading.
 
 #include <mrpt/img/CImage.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 
 #include <chrono>
 #include <map>

@@ -80,49 +80,6 @@ void OutputFolder::create(const std::string& path)
     }
 }
 
-ScoresCsv::ScoresCsv(const std::string& path) : m_path(path), m_part(path + ".part")
-{
-    m_out.open(m_part, std::ios::binary | std::ios::trunc);
-    if (!m_out) throw OutputError(m_part + ": cannot open for writing");
-    m_out << scoreCsvHeader() << "\n" << std::flush;
-    if (!m_out)
-    {
-        // Not even the header: nothing worth keeping (the destructor does not run).
-        m_out.close();
-        std::error_code ec;
-        fs::remove(m_part, ec);
-        throw OutputError(m_part + ": write failed");
-    }
-}
-
-ScoresCsv::~ScoresCsv()
-{
-    // Not committed: an error ended the run. Rows already scored stay in the .part file; a
-    // file with the header only is removed.
-    if (m_committed || m_rows > 0) return;
-    m_out.close();
-    std::error_code ec;
-    fs::remove(m_part, ec);
-}
-
-void ScoresCsv::append(const ScoreRow& row)
-{
-    ++m_rows;
-    m_out << scoreCsvLine(row) << "\n" << std::flush;
-    if (!m_out) throw OutputError(m_part + ": write failed");
-}
-
-void ScoresCsv::commit()
-{
-    if (m_committed) return;
-    m_out.close();
-    if (!m_out) throw OutputError(m_part + ": write failed");
-    std::error_code ec;
-    fs::rename(m_part, m_path, ec);
-    if (ec) throw OutputError(m_path + ": cannot rename from " + m_part + ": " + ec.message());
-    m_committed = true;
-}
-
 void writeGridMapGz(const std::string& path, const mrpt::maps::COccupancyGridMap2D& grid,
                     bool overwrite)
 {
@@ -170,29 +127,6 @@ void keepPartialRun(OutputFolder& folder, ScoresCsv& csv, const std::string& nou
     }
     printWarning(folder.dir() + ": kept the " + std::to_string(csv.rows()) + " " + noun +
                  " scored before the error (" + kept + ")");
-}
-
-std::string jsonNumber(double v)
-{
-    if (!std::isfinite(v)) return "null";
-    char buf[40];
-    std::snprintf(buf, sizeof(buf), "%.10g", v);
-    return buf;
-}
-
-std::string scoreRowJson(const ScoreRow& r)
-{
-    return "{\"step\": " + std::to_string(r.step) + ", \"entry\": " + std::to_string(r.entry) +
-           ", \"time_s\": " + jsonNumber(r.time_s) + ", \"scans\": " + std::to_string(r.scans) +
-           ", \"vertices\": " + std::to_string(r.vertices) +
-           ", \"coverage\": " + jsonNumber(r.coverage) +
-           ", \"relative_accuracy\": " + jsonNumber(r.relative_accuracy) +
-           ", \"consistency_short\": " + jsonNumber(r.consistency_short) +
-           ", \"consistency_medium\": " + jsonNumber(r.consistency_medium) +
-           ", \"consistency_long\": " + jsonNumber(r.consistency_long) +
-           ", \"brokenness\": " + std::to_string(r.brokenness) +
-           ", \"quality\": " + jsonNumber(r.quality) +
-           ", \"scoring_ms\": " + jsonNumber(r.scoring_ms) + "}";
 }
 
 }  // namespace mrpt_topoeval::cli

@@ -3,13 +3,12 @@
 
 // The outputs `rawlog` and `series` share: an output folder whose files are refused without
 // --force and which a failed run leaves as it found it, `scores.csv` written row by row under
-// a temporary name, maps as .gridmap.gz, JSON strings.
+// a temporary name (mrpt_topoeval/scores/scores.h), maps as .gridmap.gz.
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
-#include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/scores/scores.h>
 
-#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
@@ -55,29 +54,6 @@ private:
     bool m_keep = false;
 };
 
-/** `scores.csv` appended and flushed row by row to `<path>.part`, renamed to `path` by
- * commit() (also after a stop, so the part done is kept). A run that dies leaves the
- * `.part` file with every row scored so far. */
-class ScoresCsv
-{
-public:
-    explicit ScoresCsv(const std::string& path);
-    ~ScoresCsv();
-    void append(const ScoreRow& row);
-    /** Closes and renames. \throws OutputError */
-    void commit();
-    /** Rows appended so far. */
-    std::size_t rows() const { return m_rows; }
-    /** The final name (`path` of the constructor). */
-    const std::string& path() const { return m_path; }
-
-private:
-    std::string m_path, m_part;
-    std::ofstream m_out;
-    bool m_committed = false;
-    std::size_t m_rows = 0;
-};
-
 /** Called while an error that ends a run propagates (inside a catch), once `csv` holds rows:
  * they are results, so `folder` is kept, `scores.csv` committed (or its `.part` left), a
  * `report.json` written from `report_json(error text)` (best effort: the error reported is the
@@ -95,10 +71,5 @@ void writeGridMapGz(const std::string& path, const mrpt::maps::COccupancyGridMap
 /** The grid as a grey picture, top = +y (as `saveAsBitmapFile`), written atomically. */
 void writeGridPng(const std::string& path, const mrpt::maps::COccupancyGridMap2D& grid,
                   bool overwrite);
-
-/** A number for JSON: null when not finite. */
-std::string jsonNumber(double v);
-/** A score row as a JSON object (the CSV's columns). */
-std::string scoreRowJson(const ScoreRow& r);
 
 }  // namespace mrpt_topoeval::cli

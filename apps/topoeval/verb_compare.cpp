@@ -6,7 +6,7 @@
 #include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/html_report.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/output.h>
 #include <mrpt_topoeval/report_json.h>
 

@@ -5,7 +5,7 @@
 #include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/graph_json.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/output.h>
 
 #include <algorithm>

@@ -7,9 +7,10 @@
 #include <mrpt_topoeval/GraphMatcher.h>
 #include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/drawing.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/match_json.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <algorithm>
 #include <iostream>
@@ -142,11 +143,8 @@ int verbMatch(int argc, char** argv)
 
     auto t0 = Clock::now();
     std::map<std::string, double> icp_timing_ms;
-    const SimilarityMatrix similarity =
-        params.similarity.mode == SimilarityMode::Icp
-            ? icpSimilarity(gt.graph, gt.map.grid, map.graph, map.map.grid, params.similarity,
-                            &icp_timing_ms)
-            : attributeSimilarity(gt.graph, map.graph, params.similarity);
+    const SimilarityMatrix similarity = vertexSimilarity(
+        gt.graph, gt.map.grid, map.graph, map.map.grid, params.similarity, &icp_timing_ms);
     timing_ms["similarity"] = msSince(t0);
     for (const auto& [step, ms] : icp_timing_ms)
         if (step != "total") timing_ms["similarity_" + step] = ms;

@@ -4,12 +4,11 @@
 // Ctrl-C or a damaged rawlog ends the reading but never the outputs.
 
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/html_report.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/output.h>
-#include <mrpt_topoeval/report_json.h>
+#include <mrpt_topoeval/pipeline/RawlogScorer.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -18,10 +17,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 
 #include "cli_common.h"
 #include "cli_options.h"
+#include "rawlog_report.h"
 #include "scores_output.h"
 
 namespace fs = std::filesystem;
@@ -93,41 +92,12 @@ private:
     std::chrono::steady_clock::time_point m_last;
 };
 
-std::string statsJson(const RawlogStats& s)
-{
-    std::ostringstream os;
-    os << "{\"format\": " << jsonQuote(s.format) << ", \"entries\": " << s.entries
-       << ", \"action_collections\": " << s.action_collections
-       << ", \"sensory_frames\": " << s.sensory_frames << ", \"observations\": " << s.observations
-       << ", \"scans\": " << s.scans << ", \"odometry\": " << s.odometry
-       << ", \"odometry_stamped\": " << s.odometry_stamped
-       << ", \"odometry_restamped\": " << s.odometry_restamped
-       << ", \"scans_restamped\": " << s.scans_restamped
-       << ", \"scans_without_odometry\": " << s.scans_without_odometry
-       << ", \"odometry_superseded\": " << s.odometry_superseded
-       << ", \"other_observations\": " << s.other_observations
-       << ", \"unknown_objects\": " << s.unknown_objects
-       << ", \"skipped_before_offset\": " << s.skipped_before_offset << "}";
-    return os.str();
-}
-
 /** The files of DIR, checked before the run; `scores.csv.part` holds the rows of a run that
  * was killed, which are results too. */
 const std::vector<std::string> kOutputNames = {"scores.csv", "scores.csv.part",  "report.json",
                                                "scores.png", "final.gridmap.gz", "final.png",
                                                "snapshots/"};
 
-/** Indents every line after the first (nested JSON text). */
-std::string indentNested(const std::string& json, const std::string& pad)
-{
-    std::string out;
-    for (const char ch : json)
-    {
-        out += ch;
-        if (ch == '\n') out += pad;
-    }
-    return out;
-}
 }  // namespace
 
 int verbRawlog(int argc, char** argv)
@@ -262,25 +232,12 @@ int verbRawlog(int argc, char** argv)
     Progress progress;
     scorer.onProgress([&](const RawlogProgress& p) { progress.update(p, false); });
 
-    const std::string topo_ini = iniText(params);
-    const auto configuration_json = [&](const std::string& slam_ini)
-    {
-        std::ostringstream os;
-        os << "{\"every_scans\": " << opts.every_scans << ", \"max_entries\": " << opts.max_entries
-           << ", \"max_entry_bytes\": " << opts.max_entry_bytes
-           << ", \"slam_config_file\": " << jsonQuote(opts.slam_config_file)
-           << ", \"slam_ini\": " << jsonQuote(slam_ini)
-           << ", \"topoeval_config_file\": " << jsonQuote(std_opts.config())
-           << ", \"topoeval_ini\": " << jsonQuote(topo_ini) << "}";
-        return os.str();
-    };
-    const auto messages_json = [](const std::vector<std::string>& messages)
-    {
-        std::string js = "[";
-        for (std::size_t i = 0; i < messages.size(); ++i)
-            js += (i ? ", " : "") + jsonQuote(messages[i]);
-        return js + "]";
-    };
+    RawlogRun run;
+    run.rawlog = rawlog_path;
+    run.ground_truth = gt_path;
+    run.options = opts;
+    run.topoeval_config_file = std_opts.config();
+    run.topoeval_ini = iniText(params);
 
     RawlogScoreResult res;
     try
@@ -298,18 +255,7 @@ int verbRawlog(int argc, char** argv)
         keepPartialRun(
             folder, csv, "snapshots",
             [&](const std::string& error)
-            {
-                std::ostringstream js;
-                js << "{\n  \"rawlog\": " << jsonQuote(rawlog_path)
-                   << ",\n  \"ground_truth\": " << jsonQuote(gt_path) << ",\n  \"stop\": \"error\""
-                   << ",\n  \"stop_entry\": null,\n  \"stop_message\": " << jsonQuote(error)
-                   << ",\n  \"stats\": null,\n  \"snapshots\": " << csv.rows()
-                   << ",\n  \"messages\": " << messages_json(probe.messages)
-                   << ",\n  \"configuration\": " << configuration_json(probe.effective_slam_ini)
-                   << ",\n  \"final_scores\": " << scoreRowJson(last_row)
-                   << ",\n  \"final_report\": null,\n  \"timing_ms\": null\n}\n";
-                return js.str();
-            },
+            { return rawlogErrorReportJson(run, error, csv.rows(), probe, last_row); },
             force);
         throw;
     }
@@ -337,24 +283,7 @@ int verbRawlog(int argc, char** argv)
     written.push_back(out("scores.png"));
 
     // report.json: run summary, effective configuration, final scores.
-    std::ostringstream js;
-    js << "{\n  \"rawlog\": " << jsonQuote(rawlog_path)
-       << ",\n  \"ground_truth\": " << jsonQuote(gt_path)
-       << ",\n  \"stop\": " << jsonQuote(toString(res.stop))
-       << ",\n  \"stop_entry\": " << res.stop_entry
-       << ",\n  \"stop_message\": " << jsonQuote(res.stop_message)
-       << ",\n  \"stats\": " << statsJson(res.stats) << ",\n  \"snapshots\": " << res.rows.size()
-       << ",\n  \"messages\": " << messages_json(res.messages)
-       << ",\n  \"configuration\": " << configuration_json(res.effective_slam_ini)
-       << ",\n  \"final_scores\": " << (res.rows.empty() ? "null" : scoreRowJson(res.rows.back()))
-       << ",\n  \"final_report\": "
-       << indentNested(reportToJson(res.final_gt_graph, res.final_map_graph, res.final_report,
-                                    params, false),
-                       "  ")
-       << ",\n  \"timing_ms\": {\"slam\": " << jsonNumber(res.slam_ms)
-       << ", \"scoring\": " << jsonNumber(res.scoring_ms)
-       << ", \"total\": " << jsonNumber(res.total_ms) << "}\n}\n";
-    writeFileAtomic(out("report.json"), js.str(), force);
+    writeFileAtomic(out("report.json"), rawlogReportJson(run, res, params), force);
     written.push_back(out("report.json"));
     if (!html_path.empty())
     {
@@ -362,7 +291,7 @@ int verbRawlog(int argc, char** argv)
         page.kind = HtmlReportContent::Kind::Rawlog;
         page.title = "rawlog " + rawlog_path + " against " + gt_path;
         page.generator = versionLine();
-        page.parameters_ini = topo_ini;
+        page.parameters_ini = run.topoeval_ini;
         page.extra_ini = res.effective_slam_ini;
         page.messages = res.messages;
         if (res.stop != RawlogStop::EndOfFile)

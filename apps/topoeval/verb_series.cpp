@@ -4,10 +4,12 @@
 
 #include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/QualityEvaluator.h>
-#include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/html_report.h>
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/json/JsonWriter.h>
+#include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
+#include <mrpt_topoeval/scores/scores.h>
 
 #include <algorithm>
 #include <cctype>
@@ -15,7 +17,6 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
-#include <sstream>
 
 #include "cli_common.h"
 #include "cli_options.h"
@@ -27,32 +28,6 @@ namespace mrpt_topoeval::cli
 {
 namespace
 {
-std::string lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return s;
-}
-
-bool isMapFile(const fs::path& p)
-{
-    const std::string name = lower(p.filename().string());
-    for (const char* ext : {".yaml", ".yml", ".gridmap", ".gridmap.gz", ".simplemap",
-                            ".simplemap.gz", ".png", ".pgm", ".bmp", ".jpg", ".jpeg"})
-    {
-        const std::string e = ext;
-        if (name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0)
-            return true;
-    }
-    return false;
-}
-
-bool isImage(const fs::path& p)
-{
-    const std::string e = lower(p.extension().string());
-    return e == ".png" || e == ".pgm" || e == ".bmp" || e == ".jpg" || e == ".jpeg";
-}
-
 /** A folder's maps sorted by name; an image with a YAML beside it is the YAML's. */
 std::vector<std::string> mapsInFolder(const std::string& dir)
 {
@@ -65,8 +40,8 @@ std::vector<std::string> mapsInFolder(const std::string& dir)
     for (; it != fs::directory_iterator(); it.increment(ec))
     {
         if (ec) throw InputError(dir + ": cannot list the folder: " + ec.message());
-        if (!it->is_regular_file(entry_ec) || !isMapFile(it->path())) continue;
-        if (isImage(it->path()))
+        if (!it->is_regular_file(entry_ec) || !isMapFile(it->path().string())) continue;
+        if (mapFormatFromName(it->path().string()) == MapFormat::Image)
         {
             fs::path y = it->path();
             if (fs::exists(y.replace_extension(".yaml"), entry_ec) ||
@@ -80,14 +55,26 @@ std::vector<std::string> mapsInFolder(const std::string& dir)
     return out;
 }
 
-/** report.json: the ground truth, each map scored (`files`: JSON objects), and how the run
- * ended: "done", or "error" and the error's text. */
-std::string reportJson(const std::string& gt_path, const std::string& files,
-                       const std::string& error)
+/** report.json: the ground truth, each map scored so far (`maps[i]` with `rows[i]`), and how
+ * the run ended: "done", or "error" and the error's text. */
+std::string reportJson(const std::string& gt_path, const std::vector<std::string>& maps,
+                       const std::vector<ScoreRow>& rows, const std::string& error)
 {
-    return "{\n  \"ground_truth\": " + jsonQuote(gt_path) +
-           ",\n  \"stop\": " + jsonQuote(error.empty() ? "done" : "error") +
-           ",\n  \"stop_message\": " + jsonQuote(error) + ",\n  \"maps\": [" + files + "]\n}\n";
+    JsonWriter w;
+    w.beginObject();
+    w.key("ground_truth").value(gt_path);
+    w.key("stop").value(error.empty() ? "done" : "error");
+    w.key("stop_message").value(error);
+    w.key("maps").beginArray(true);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+        w.beginObject().key("file").value(maps[i]).key("scores");
+        writeScoreRow(w, rows[i]);
+        w.endObject();
+    }
+    w.endArray();
+    w.endObject();
+    return w.str();
 }
 
 /** The last number in a file name (mapbuilt_00200.yaml -> 200), or `fallback`. */
@@ -183,7 +170,6 @@ int verbSeries(int argc, char** argv)
     ScoresCsv csv(out("scores.csv"));
     std::vector<ScoreRow> rows;
     std::vector<HtmlEntry> html_entries;
-    std::ostringstream files;
     try
     {
         for (std::size_t i = 0; i < maps.size(); ++i)
@@ -202,8 +188,6 @@ int verbSeries(int argc, char** argv)
             if (!html_path.empty())
                 html_entries.push_back(
                     makeHtmlEntry(maps[i], gt.grid, gt_graph, m.grid, graph, report, false, &row));
-            files << (i ? ", " : "") << "{\"file\": " << jsonQuote(maps[i])
-                  << ", \"scores\": " << scoreRowJson(row) << "}";
             std::cerr << "topoeval: series: " << (i + 1) << "/" << maps.size() << " " << maps[i]
                       << ": quality " << report.quality << ", coverage " << report.coverage << "\n";
         }
@@ -213,7 +197,7 @@ int verbSeries(int argc, char** argv)
         if (rows.empty()) throw;  // nothing scored: the folder is left as the run found it
         keepPartialRun(
             folder, csv, "maps",
-            [&](const std::string& error) { return reportJson(gt_path, files.str(), error); },
+            [&](const std::string& error) { return reportJson(gt_path, maps, rows, error); },
             force);
         throw;
     }
@@ -221,7 +205,7 @@ int verbSeries(int argc, char** argv)
     csv.commit();
     writePngAtomic(out("scores.png"),
                    drawScorePlot(rows, "maps vs " + fs::path(gt_path).filename().string()), force);
-    writeFileAtomic(out("report.json"), reportJson(gt_path, files.str(), ""), force);
+    writeFileAtomic(out("report.json"), reportJson(gt_path, maps, rows, ""), force);
     if (!html_path.empty())
     {
         HtmlReportContent page;

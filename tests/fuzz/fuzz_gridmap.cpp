@@ -2,7 +2,7 @@
 // loadMap() on an MRPT serialized grid: `.gridmap.gz` when the bytes start with the gzip magic
 // (MRPT's stream reads both, the name is what users give), `.gridmap` otherwise.
 
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 
 #include "fuzz_common.h"
 

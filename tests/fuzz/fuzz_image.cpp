@@ -3,7 +3,7 @@
 // does), the rest is the file. Exercises our header checks (max_cells before decoding) and the
 // image decoders as we call them.
 
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 
 #include "fuzz_common.h"
 

@@ -4,7 +4,7 @@
 // image.jpg next to the YAML: the YAML's `image:` key decides which one is decoded. Without
 // the separator the whole input is the YAML.
 
-#include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/maps/load_map.h>
 
 #include <algorithm>
 #include <cstring>

@@ -17,9 +17,4 @@ void writeFileAtomic(const std::string& path, const std::string& bytes, bool ove
 /** Encodes an image as PNG and writes it with writeFileAtomic(). \throws OutputError */
 void writePngAtomic(const std::string& path, const mrpt::img::CImage& img, bool overwrite);
 
-/** `s` as a quoted JSON string, as in every JSON file the library writes: `"` and `\` escaped,
- * control characters as `\n` ... or `\u00XX`, valid UTF-8 unchanged, each byte of an invalid
- * sequence as U+FFFD (file names on Linux are arbitrary bytes; a JSON text must be UTF-8). */
-std::string jsonQuote(std::string_view s);
-
 }  // namespace mrpt_topoeval

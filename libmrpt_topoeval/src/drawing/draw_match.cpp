@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "drawing/graph_drawing.h"
 #include "internal/MatchView.h"
-#include "internal/graph_drawing.h"
 
 namespace mrpt_topoeval
 {

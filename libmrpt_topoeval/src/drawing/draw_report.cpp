@@ -15,7 +15,7 @@
 #include <tuple>
 #include <vector>
 
-#include "internal/graph_drawing.h"
+#include "drawing/graph_drawing.h"
 
 namespace mrpt_topoeval
 {

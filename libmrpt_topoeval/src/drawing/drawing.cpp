@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "internal/graph_drawing.h"
+#include "drawing/graph_drawing.h"
 
 namespace mrpt_topoeval
 {

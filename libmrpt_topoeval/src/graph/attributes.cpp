@@ -6,7 +6,7 @@
 #include <numeric>
 #include <tuple>
 
-#include "internal/ring.h"
+#include "graph/ring.h"
 
 namespace mrpt_topoeval::internal
 {

@@ -20,7 +20,7 @@
 #include <sstream>
 #include <vector>
 
-#include "internal/serialized_layout.h"
+#include "maps/serialized_layout.h"
 
 namespace fs = std::filesystem;
 

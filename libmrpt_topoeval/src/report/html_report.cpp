@@ -5,6 +5,7 @@
 
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/html_report.h>
+#include <mrpt_topoeval/json/JsonWriter.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,9 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "internal/JsonWriter.h"
+#include "drawing/graph_drawing.h"
 #include "internal/MatchView.h"
-#include "internal/graph_drawing.h"
 
 namespace mrpt_topoeval
 {
@@ -33,7 +33,6 @@ extern const char* const kReportStyle;
 namespace
 {
 using Grid = mrpt::maps::COccupancyGridMap2D;
-using internal::JsonWriter;
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 

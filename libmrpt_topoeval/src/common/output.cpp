@@ -14,8 +14,6 @@
 #include <string>
 #include <vector>
 
-#include "internal/JsonWriter.h"
-
 namespace fs = std::filesystem;
 
 namespace mrpt_topoeval
@@ -182,7 +180,5 @@ void writePngAtomic(const std::string& path, const mrpt::img::CImage& img, bool 
     if (!ok) throw OutputError(path + ": PNG encoding failed");
     writeFileAtomic(path, std::string(buf.begin(), buf.end()), overwrite);
 }
-
-std::string jsonQuote(std::string_view s) { return internal::JsonWriter::quote(s); }
 
 }  // namespace mrpt_topoeval

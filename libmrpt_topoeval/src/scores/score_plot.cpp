@@ -2,7 +2,7 @@
 // scores.png: the scores of the snapshots against time, drawn with OpenCV (no plotting
 // dependency): one polyline with markers per score, axes with ticks, a legend on the right.
 
-#include <mrpt_topoeval/RawlogScorer.h>
+#include <mrpt_topoeval/scores/scores.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,16 +1,14 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include <mrpt_topoeval/graph_json.h>
+#include <mrpt_topoeval/json/JsonWriter.h>
 
 #include <cmath>
 #include <cstdint>
-
-#include "internal/JsonWriter.h"
 
 namespace mrpt_topoeval
 {
 namespace
 {
-using internal::JsonWriter;
 
 // Fixed precisions, so equal graphs give equal bytes and the files stay readable:
 // 0.1 mm for positions and lengths (far below any cell size), 0.001 deg for angles.
@@ -111,7 +109,7 @@ void writeStats(JsonWriter& w, const GraphBuildStats& s)
     w.key("vertices_final").value(u(s.vertices_final));
     w.key("alpha_polygon_segments").value(u(s.alpha_polygon_segments));
     w.endObject();
-    internal::writeTiming(w, s.timing_ms);
+    writeTiming(w, s.timing_ms);
 }
 }  // namespace
 

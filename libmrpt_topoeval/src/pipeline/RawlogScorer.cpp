@@ -27,7 +27,7 @@
 #include <limits>
 #include <sstream>
 
-#include "internal/error_text.h"
+#include "common/error_text.h"
 #include "rawlog/RawlogReader.h"
 
 namespace fs = std::filesystem;
@@ -490,41 +490,6 @@ std::string toString(RawlogStop stop)
             return "max_entries";
     }
     return "unknown";
-}
-
-ScoreRow scoreRowFromReport(const QualityReport& report)
-{
-    ScoreRow row;
-    row.vertices = report.map_vertices;
-    row.coverage = report.coverage;
-    row.relative_accuracy = report.relative_accuracy.score;
-    for (const auto& c : report.local_consistency)
-    {
-        if (c.name == "short") row.consistency_short = c.score;
-        if (c.name == "medium") row.consistency_medium = c.score;
-        if (c.name == "long") row.consistency_long = c.score;
-    }
-    row.brokenness = report.brokenness.degree;
-    row.quality = report.quality;
-    return row;
-}
-
-std::string scoreCsvHeader()
-{
-    return "step,entry,time_s,scans,vertices,coverage,relative_accuracy,consistency_short,"
-           "consistency_medium,consistency_long,brokenness,quality,scoring_ms";
-}
-
-std::string scoreCsvLine(const ScoreRow& r)
-{
-    char time_buf[32] = "";
-    if (std::isfinite(r.time_s)) std::snprintf(time_buf, sizeof(time_buf), "%.3f", r.time_s);
-    char buf[320];
-    std::snprintf(buf, sizeof(buf), "%d,%zu,%s,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%.4f,%.1f",
-                  r.step, r.entry, time_buf, r.scans, r.vertices, r.coverage, r.relative_accuracy,
-                  r.consistency_short, r.consistency_medium, r.consistency_long, r.brokenness,
-                  r.quality, r.scoring_ms);
-    return buf;
 }
 
 RawlogScorer::RawlogScorer(const RawlogScorerOptions& options, const Parameters& params)

@@ -1,5 +1,5 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
-#include "internal/error_text.h"
+#include "common/error_text.h"
 
 #include <cctype>
 

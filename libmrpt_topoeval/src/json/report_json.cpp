@@ -1,5 +1,6 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt_topoeval/json/JsonWriter.h>
 #include <mrpt_topoeval/report_json.h>
 
 #include <algorithm>
@@ -14,18 +15,16 @@
 #include <utility>
 #include <vector>
 
-#include "internal/JsonWriter.h"
-#include "internal/match_json_internal.h"
+#include "json/match_json_internal.h"
 
 namespace mrpt_topoeval
 {
 namespace
 {
-using internal::JsonWriter;
 
 // Fixed precisions, so equal reports give equal bytes: 0.1 mm for distances (as the graph's
 // JSON), 1e-6 m^2 for squared errors (the threshold is tenths of m^2), 1e-4 for scores in
-// [0, 1] (as similarities), 0.001 deg (and 0.001 ms: internal::writeTiming).
+// [0, 1] (as similarities), 0.001 deg (and 0.001 ms: writeTiming).
 constexpr int kMetreDecimals = internal::kMetreDecimals;
 constexpr int kSquareMetreDecimals = 6;
 constexpr int kScoreDecimals = internal::kSimilarityDecimals;
@@ -274,7 +273,7 @@ std::string reportToJson(const TopologyGraph& ground_truth, const TopologyGraph&
     w.endArray();
     w.key("parameters");
     writeParameters(w, effective);
-    if (with_timing) internal::writeTiming(w, r.timing_ms);
+    if (with_timing) writeTiming(w, r.timing_ms);
     w.endObject();
     return w.str();
 }

@@ -1,12 +1,13 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
-#include "internal/JsonWriter.h"
+#include <mrpt_topoeval/json/JsonWriter.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
-namespace mrpt_topoeval::internal
+namespace mrpt_topoeval
 {
 namespace
 {
@@ -58,6 +59,14 @@ std::string JsonWriter::formatDouble(double v, int decimals)
     }
     if (s == "-0") s = "0";
     return s;
+}
+
+std::string JsonWriter::formatSignificant(double v, int significant)
+{
+    if (!std::isfinite(v)) return "null";
+    char buf[40];
+    std::snprintf(buf, sizeof(buf), "%.*g", std::clamp(significant, 1, 17), v);
+    return buf;
 }
 
 std::string JsonWriter::quote(std::string_view s)
@@ -254,6 +263,39 @@ JsonWriter& JsonWriter::null()
     return *this;
 }
 
+JsonWriter& JsonWriter::valueSignificant(double v, int significant)
+{
+    beforeValue();
+    m_out += formatSignificant(v, significant);
+    if (m_stack.empty()) m_done = true;
+    return *this;
+}
+
+JsonWriter& JsonWriter::embed(std::string_view document)
+{
+    while (!document.empty() && document.back() == '\n') document.remove_suffix(1);
+    if (document.empty()) throw std::logic_error("JsonWriter: embedding an empty document");
+    beforeValue();
+    // On a single line the document's line breaks and their indentation are dropped (strings
+    // hold no raw line breaks: quote() escapes them).
+    const bool one_line = singleLineHere();
+    bool line_start = false;
+    for (const char ch : document)
+    {
+        if (ch == '\n')
+        {
+            line_start = true;
+            if (!one_line) newline(m_stack.size());
+            continue;
+        }
+        if (one_line && line_start && ch == ' ') continue;
+        line_start = false;
+        m_out.push_back(ch);
+    }
+    if (m_stack.empty()) m_done = true;
+    return *this;
+}
+
 JsonWriter& JsonWriter::pair(double a, double b, int decimals)
 {
     beginArray(true);
@@ -276,4 +318,4 @@ void writeTiming(JsonWriter& w, const std::map<std::string, double>& timing_ms)
     w.endObject();
 }
 
-}  // namespace mrpt_topoeval::internal
+}  // namespace mrpt_topoeval

@@ -1,10 +1,10 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#include <mrpt_topoeval/json/JsonWriter.h>
 #include <mrpt_topoeval/match_json.h>
 
 #include <cstdint>
 
-#include "internal/JsonWriter.h"
-#include "internal/match_json_internal.h"
+#include "json/match_json_internal.h"
 
 namespace mrpt_topoeval
 {
@@ -62,7 +62,7 @@ void writeMatches(JsonWriter& w, const GraphMatch& match)
 std::string matchToJson(const TopologyGraph& ground_truth, const TopologyGraph& map,
                         const GraphMatch& match, const std::map<std::string, double>* timing_ms)
 {
-    internal::JsonWriter w;
+    JsonWriter w;
     w.beginObject();
     w.key("ground_truth");
     internal::writeMatchedGraph(w, ground_truth);
@@ -70,7 +70,7 @@ std::string matchToJson(const TopologyGraph& ground_truth, const TopologyGraph& 
     internal::writeMatchedGraph(w, map);
     w.key("matches");
     internal::writeMatches(w, match);
-    if (timing_ms) internal::writeTiming(w, *timing_ms);
+    if (timing_ms) writeTiming(w, *timing_ms);
     w.endObject();
     return w.str();
 }

@@ -2,7 +2,7 @@
 // The serialized layouts of the classes topoeval checks before MRPT reads them, mirrored from
 // MRPT 2.5.8's serializeFrom(), version by version (internal/serialized_layout.h says why).
 
-#include "internal/serialized_layout.h"
+#include "maps/serialized_layout.h"
 
 #include <cstring>
 #include <limits>

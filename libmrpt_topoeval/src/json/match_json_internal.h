@@ -9,7 +9,7 @@
 
 // By its own folder, not "internal/...": tests include this header by path, without src/ on
 // their include path.
-#include "JsonWriter.h"
+#include <mrpt_topoeval/json/JsonWriter.h>
 
 namespace mrpt_topoeval::internal
 {

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "internal/ring.h"
+#include "graph/ring.h"
 
 namespace mrpt_topoeval::internal
 {

@@ -1,0 +1,77 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace mrpt_topoeval
+{
+/** How to read map files whose format does not carry everything (plain images). */
+struct MapLoadOptions
+{
+    /** Cell size for plain images and for rendering `.simplemap` files [m/cell]. */
+    double resolution_m = 0.05;
+    /** Plain images only: a pixel is occupied when (255 - grey)/255 > this (ROS default). */
+    double occupied_thresh = 0.65;
+    /** Plain images only: a pixel is free when (255 - grey)/255 < this (ROS default). */
+    double free_thresh = 0.196;
+    /** Pixels between the thresholds of an image without an explicit ROS `mode` (ROS
+     * trinary: unknown). "auto" (default): keep their probability when the image holds more
+     * than 4 distinct grey levels between the thresholds, as probabilistic renderings do
+     * (MRPT's: unknown is 127, a cell seen free a few times is 150-200 grey, below ROS's
+     * free_thresh 0.196), so that the [GraphBuilder] thresholds classify them; else unknown,
+     * as in a ROS trinary image (one unknown grey, 205). "unknown" or "probability" force
+     * one reading. */
+    std::string grey_between_thresholds = "auto";
+    /** Largest map accepted, in cells (width x height). Image headers are checked against it
+     * before any pixel is decoded. Default 10^8 cells (10000 x 10000). */
+    std::uint64_t max_cells = 100'000'000ULL;
+};
+
+/** A grid map and where it came from. */
+struct LoadedMap
+{
+    mrpt::maps::COccupancyGridMap2D grid;
+    std::string file;    //!< The path as given.
+    std::string format;  //!< "ros_yaml", "image", "gridmap" or "simplemap".
+};
+
+/** The map file formats loadMap() reads. */
+enum class MapFormat
+{
+    RosYaml,    //!< `*.yaml`, `*.yml`: ROS map_server description and its image
+    Image,      //!< `*.png|*.pgm|*.bmp|*.jpg|*.jpeg`: a plain image
+    Gridmap,    //!< `*.gridmap`, `*.gridmap.gz`: MRPT serialized COccupancyGridMap2D
+    Simplemap,  //!< `*.simplemap`, `*.simplemap.gz`: MRPT CSimpleMap, rendered
+};
+
+/** The format loadMap() reads `path` as, from its file name (any case); nullopt if none. */
+std::optional<MapFormat> mapFormatFromName(const std::string& path);
+
+/** Whether `path` names a map file loadMap() can read, by its name only (`a.yaml`, not a bare
+ * `.yaml`): how `topoeval series` picks the maps of a folder. */
+bool isMapFile(const std::string& path);
+
+/** Reads any supported map file into a `COccupancyGridMap2D`; the one loader every app uses.
+ *
+ * Formats, chosen by file name:
+ * - `*.yaml` / `*.yml`: ROS map_server description (image, resolution, origin, negate,
+ *   occupied_thresh, free_thresh, optional mode trinary|scale|raw). Cells become occupied
+ *   (P(free)=0), free (1) or unknown (0.5); in `scale` mode cells between the thresholds keep
+ *   their probability. The origin's x, y are honoured (snapped to the cell grid by MRPT); a
+ *   non-zero yaw is refused, as MRPT grids are axis aligned.
+ * - `*.png|*.pgm|*.bmp|*.jpg|*.jpeg`: a plain image, top row = max y, lower-left pixel at the
+ *   world origin, grey classified with `opts` thresholds.
+ * - `*.gridmap`, `*.gridmap.gz`: an MRPT serialized `COccupancyGridMap2D`.
+ * - `*.simplemap`, `*.simplemap.gz`: an MRPT `CSimpleMap`, rendered into a grid of
+ *   `opts.resolution_m`.
+ *
+ * \throws InputError with a one-line message naming the file and the problem (missing file,
+ *         unreadable or truncated image, missing or invalid YAML key, a size over
+ *         `opts.max_cells`, wrong serialized class, ...). Never crashes on bad bytes. */
+LoadedMap loadMap(const std::string& path, const MapLoadOptions& opts = {});
+
+}  // namespace mrpt_topoeval
