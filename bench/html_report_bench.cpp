@@ -10,7 +10,7 @@
 
 #include <benchmark/benchmark.h>
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/maps/load_map.h>
 

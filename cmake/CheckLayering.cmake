@@ -36,20 +36,18 @@ set(rank_internal/JsonWriter.h ${rank_json})
 set(pub_errors.h common)
 set(pub_output.h common)
 set(pub_TopologyGraph.h graph)
-set(pub_GraphBuilder.h graph)
-set(pub_VertexSimilarity.h similarity)
 set(pub_GraphMatch.h matching)
-set(pub_GraphMatcher.h matching)
 set(pub_QualityReport.h evaluation)
-set(pub_QualityEvaluator.h evaluation)
 set(pub_Parameters.h parameters)
 set(pub_graph_json.h json)
 set(pub_match_json.h json)
 set(pub_report_json.h json)
 set(pub_drawing.h drawing)
 set(pub_html_report.h report)
-# Forwarding headers kept for old code, and the umbrella header: they may include anything.
-set(forwarders map_io.h RawlogScorer.h topoeval.h)
+# Forwarding headers kept for old code (deprecated names), and the umbrella header: they may
+# include anything.
+set(forwarders map_io.h RawlogScorer.h GraphBuilder.h VertexSimilarity.h GraphMatcher.h
+               QualityEvaluator.h topoeval.h)
 # Known exceptions, each with its reason; remove one when its file is fixed.
 #   QualityEvaluator.cpp held evaluate() until it moved to pipeline/; its #include of
 #   Parameters.h goes with the header rename (matching work, step 3).

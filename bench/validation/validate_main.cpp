@@ -3,9 +3,9 @@
 // reports how often the matcher is right. Threads across cases; deterministic for a seed.
 
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/evaluation/evaluate_match.h>
 
 #include <algorithm>
 #include <atomic>

@@ -3,7 +3,7 @@
 
 // The two stages of the matcher (paper III-B), on the matching views of both graphs.
 
-#include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 
 #include <vector>
 

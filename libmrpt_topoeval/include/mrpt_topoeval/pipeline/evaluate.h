@@ -9,15 +9,15 @@
 // vertexSimilarity(...)                                  the similarity [VertexSimilarity] mode
 //                                                        chooses (attributes or ICP)
 //
-// The two evaluate() overloads are declared in <mrpt_topoeval/QualityEvaluator.h> until that
-// header is renamed (doc/architecture.md, "Left to do"); their definitions live here
+// The two evaluate() overloads are declared in <mrpt_topoeval/evaluation/evaluate_match.h> until
+// that header is renamed (doc/architecture.md, "Left to do"); their definitions live here
 // (src/pipeline/evaluate.cpp).
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/TopologyGraph.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
+#include <mrpt_topoeval/evaluation/evaluate_match.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <map>
 #include <string>
