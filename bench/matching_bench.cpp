@@ -15,10 +15,10 @@
 
 #include <benchmark/benchmark.h>
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/matching/match_graphs.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 #include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <cmath>

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 #include <mrpt_topoeval/errors.h>
-#include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/html_report.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <cmath>
 #include <string>

@@ -12,6 +12,7 @@
 #include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>

@@ -4,10 +4,10 @@
 // with --verbose, full) report; optionally written as JSON and drawn like the paper's Fig. 7.
 
 #include <mrpt_topoeval/drawing.h>
-#include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 #include <mrpt_topoeval/report_json.h>
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/errors.h>
-#include <mrpt_topoeval/evaluation/evaluate_match.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <algorithm>
 #include <atomic>

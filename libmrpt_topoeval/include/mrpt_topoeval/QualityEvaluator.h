@@ -2,5 +2,7 @@
 #pragma once
 
 // Deprecated name (no class QualityEvaluator exists), kept so that existing code compiles: include
-// <mrpt_topoeval/evaluation/evaluate_match.h> (or <mrpt_topoeval/topoeval.h>).
+// <mrpt_topoeval/evaluation/evaluate_match.h> (evaluateMatch(), QualityParameters) and
+// <mrpt_topoeval/pipeline/evaluate.h> (evaluate()), or <mrpt_topoeval/topoeval.h>.
 #include <mrpt_topoeval/evaluation/evaluate_match.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>

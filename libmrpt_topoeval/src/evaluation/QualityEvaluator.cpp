@@ -2,7 +2,6 @@
 // Paper IV: map attributes from a match of two Topology Graphs, and the scores built on them.
 
 #include <mrpt/config/CConfigFileBase.h>
-#include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/graph/build_graph.h>

@@ -16,8 +16,8 @@
 #include <mrpt/system/datetime.h>
 #include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/errors.h>
-#include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/graph/build_graph.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <chrono>
 #include <cmath>

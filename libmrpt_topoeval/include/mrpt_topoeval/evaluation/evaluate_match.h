@@ -2,7 +2,6 @@
 #pragma once
 
 #include <mrpt/config/CLoadableOptions.h>
-#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/GraphMatch.h>
 #include <mrpt_topoeval/QualityReport.h>
 #include <mrpt_topoeval/TopologyGraph.h>
@@ -11,8 +10,6 @@
 
 namespace mrpt_topoeval
 {
-struct Parameters;
-
 /** Parameters of the map attributes and scores (paper IV), INI section `[QualityEvaluator]`. */
 struct QualityParameters : public mrpt::config::CLoadableOptions
 {
@@ -67,20 +64,5 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
  * quality score, from a match of the ground truth's graph with the map's. */
 QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGraph& map,
                             const GraphMatch& match, const QualityParameters& params = {});
-
-/** The one-call pipeline: both graphs, vertex similarity (attributes or ICP as configured),
- * match, evaluation. Graphs are returned through the pointers if given. */
-QualityReport evaluate(const mrpt::maps::COccupancyGridMap2D& ground_truth,
-                       const mrpt::maps::COccupancyGridMap2D& map, const Parameters& params,
-                       TopologyGraph* gt_graph = nullptr, TopologyGraph* map_graph = nullptr);
-
-/** evaluate() with the ground truth's graph already built, `gt_graph` =
- * buildTopologyGraph(ground_truth, params.graph): for scoring many maps against one ground truth
- * (rank, series, rawlog snapshots) without building its graph again for each. The ground
- * truth's grid is still needed by ICP similarity. timing_ms "graphs" is the map's graph only. */
-QualityReport evaluate(const TopologyGraph& gt_graph,
-                       const mrpt::maps::COccupancyGridMap2D& ground_truth,
-                       const mrpt::maps::COccupancyGridMap2D& map, const Parameters& params,
-                       TopologyGraph* map_graph = nullptr);
 
 }  // namespace mrpt_topoeval
