@@ -21,7 +21,7 @@
 #include <iostream>
 #include <limits>
 
-#include "../libmrpt_topoeval/src/internal/horn.h"
+#include "../libmrpt_topoeval/src/geometry/horn.h"
 #include "synthetic_maps.h"
 #include "test_paths.h"
 

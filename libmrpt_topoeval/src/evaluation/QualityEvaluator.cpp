@@ -14,8 +14,8 @@
 #include <queue>
 #include <sstream>
 
+#include "geometry/horn.h"
 #include "internal/MatchView.h"
-#include "internal/horn.h"
 #include "internal/validation.h"
 
 namespace mrpt_topoeval

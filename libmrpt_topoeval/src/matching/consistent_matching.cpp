@@ -16,7 +16,7 @@
 #include <set>
 #include <tuple>
 
-#include "internal/horn.h"
+#include "geometry/horn.h"
 #include "internal/matching.h"
 
 namespace mrpt_topoeval::internal
