@@ -23,7 +23,7 @@
 #include <optional>
 #include <set>
 
-#include "../libmrpt_topoeval/src/internal/MatchView.h"
+#include "../libmrpt_topoeval/src/graph/MatchView.h"
 #include "synthetic_maps.h"
 #include "test_paths.h"
 

@@ -14,9 +14,9 @@
 #include <queue>
 #include <sstream>
 
+#include "common/validation.h"
 #include "geometry/horn.h"
-#include "internal/MatchView.h"
-#include "internal/validation.h"
+#include "graph/MatchView.h"
 
 namespace mrpt_topoeval
 {

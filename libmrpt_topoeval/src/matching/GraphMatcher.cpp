@@ -9,7 +9,7 @@
 #include <chrono>
 #include <functional>
 
-#include "internal/matching.h"
+#include "matching/matching.h"
 
 namespace mrpt_topoeval
 {

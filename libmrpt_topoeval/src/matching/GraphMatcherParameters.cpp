@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "internal/validation.h"
+#include "common/validation.h"
 
 namespace mrpt_topoeval
 {

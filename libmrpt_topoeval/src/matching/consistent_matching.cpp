@@ -17,7 +17,7 @@
 #include <tuple>
 
 #include "geometry/horn.h"
-#include "internal/matching.h"
+#include "matching/matching.h"
 
 namespace mrpt_topoeval::internal
 {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <functional>
 
-#include "internal/MatchView.h"
+#include "graph/MatchView.h"
 
 namespace mrpt_topoeval
 {

@@ -33,7 +33,7 @@
 #include <thread>
 #include <vector>
 
-#include "internal/MatchView.h"
+#include "graph/MatchView.h"
 
 namespace mrpt_topoeval
 {

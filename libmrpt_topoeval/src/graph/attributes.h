@@ -4,7 +4,7 @@
 #include <mrpt_topoeval/TopologyGraph.h>
 #include <mrpt_topoeval/graph/build_graph.h>
 
-#include "internal/GraphEditor.h"
+#include "graph/GraphEditor.h"
 
 namespace mrpt_topoeval::internal
 {

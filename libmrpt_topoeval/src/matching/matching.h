@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "internal/MatchView.h"
+#include "graph/MatchView.h"
 
 namespace mrpt_topoeval::internal
 {
