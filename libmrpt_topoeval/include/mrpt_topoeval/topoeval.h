@@ -14,6 +14,8 @@
 
 // Errors: InputError (bad input), OutputError (cannot write).
 #include <mrpt_topoeval/errors.h>
+// geometry: the rigid 2D transform (T_gt_map) of matches and reports.
+#include <mrpt_topoeval/geometry/Transform2D.h>
 // maps: map files -> mrpt::maps::COccupancyGridMap2D.
 #include <mrpt_topoeval/maps/load_map.h>
 // graph: the Topology Graph of a grid (paper II).
