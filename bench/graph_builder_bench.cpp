@@ -8,7 +8,7 @@
 // benchmark's own peak, run it alone, e.g. `--benchmark_filter=LargeBuilding/10000`.
 
 #include <benchmark/benchmark.h>
-#include <mrpt_topoeval/GraphBuilder.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/maps/load_map.h>
 #include <sys/resource.h>
 

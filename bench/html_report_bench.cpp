@@ -10,9 +10,9 @@
 
 #include <benchmark/benchmark.h>
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/maps/load_map.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <cmath>
 #include <map>

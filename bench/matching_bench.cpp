@@ -14,12 +14,12 @@
 // ICP `clouds_ms`, the part of the time spent cutting the point clouds.
 
 #include <benchmark/benchmark.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/GraphMatcher.h>
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/maps/load_map.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <cmath>
 #include <map>

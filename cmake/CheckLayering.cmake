@@ -7,6 +7,7 @@ set(LIB "${ROOT}/libmrpt_topoeval")
 
 # Ranks, in pipeline order.
 set(rank_common 0)
+set(rank_geometry 0)
 set(rank_maps 1)
 set(rank_rawlog 2)
 set(rank_skeleton 3)
@@ -20,43 +21,24 @@ set(rank_drawing 9)
 set(rank_scores 9)
 set(rank_report 10)
 set(rank_pipeline 11)
-# Private folders still holding headers that move with the matching work (step 3 of the
-# layout): each header's stage.
-set(rank_internal/GraphEditor.h ${rank_graph})
-set(rank_internal/attributes.h ${rank_graph})
-set(rank_internal/outer_boundary.h ${rank_skeleton})
-set(rank_internal/voronoi_cgal.h ${rank_skeleton})
-set(rank_internal/MatchView.h ${rank_graph})
-set(rank_internal/matching.h ${rank_matching})
-set(rank_internal/validation.h ${rank_common})
-set(rank_internal/horn.h ${rank_evaluation})
-set(rank_internal/JsonWriter.h ${rank_json})
-
 # Public headers at the top of include/mrpt_topoeval/ (subfolders are ranked by their name).
 set(pub_errors.h common)
 set(pub_output.h common)
 set(pub_TopologyGraph.h graph)
-set(pub_GraphBuilder.h graph)
-set(pub_VertexSimilarity.h similarity)
 set(pub_GraphMatch.h matching)
-set(pub_GraphMatcher.h matching)
 set(pub_QualityReport.h evaluation)
-set(pub_QualityEvaluator.h evaluation)
 set(pub_Parameters.h parameters)
 set(pub_graph_json.h json)
 set(pub_match_json.h json)
 set(pub_report_json.h json)
 set(pub_drawing.h drawing)
 set(pub_html_report.h report)
-# Forwarding headers kept for old code, and the umbrella header: they may include anything.
-set(forwarders map_io.h RawlogScorer.h topoeval.h)
-# Known exceptions, each with its reason; remove one when its file is fixed.
-#   QualityEvaluator.cpp held evaluate() until it moved to pipeline/; its #include of
-#   Parameters.h goes with the header rename (matching work, step 3).
-#   consistent_matching.cpp verifies groups with hornAlign(), whose Transform2D is declared in
-#   QualityReport.h: both move to an earlier geometry unit with the matching work (step 3).
-set(exceptions "src/evaluation/QualityEvaluator.cpp>mrpt_topoeval/Parameters.h"
-               "src/matching/consistent_matching.cpp>internal/horn.h")
+# Forwarding headers kept for old code (deprecated names), and the umbrella header: they may
+# include anything.
+set(forwarders map_io.h RawlogScorer.h GraphBuilder.h VertexSimilarity.h GraphMatcher.h
+               QualityEvaluator.h topoeval.h)
+# Known exceptions, "file>included header", each with its reason; none at present.
+set(exceptions "")
 
 # The rank of a header named as included: "mrpt_topoeval/X" or a private "folder/X".
 function(header_rank inc out)
@@ -69,9 +51,6 @@ function(header_rank inc out)
             return()
         endif()
         set(stage "${pub_${name}}")
-    elseif(DEFINED rank_${inc})
-        set(${out} "${rank_${inc}}" PARENT_SCOPE)
-        return()
     elseif(inc MATCHES "^([^/]+)/")
         set(stage "${CMAKE_MATCH_1}")
     endif()
@@ -91,9 +70,6 @@ foreach(f ${files})
         header_rank("${CMAKE_MATCH_1}" own)
     elseif(f MATCHES "^src/([^/]+)$")
         set(own ${rank_parameters})  # src/Parameters.cpp
-    elseif(f MATCHES "^src/internal/")
-        string(REGEX REPLACE "^src/" "" inc "${f}")
-        header_rank("${inc}" own)
     elseif(f MATCHES "^src/([^/]+)/")
         set(own "${rank_${CMAKE_MATCH_1}}")
     endif()

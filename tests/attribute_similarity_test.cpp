@@ -2,9 +2,9 @@
 // Paper III-A, first approach: vertex similarity from attributes.
 
 #include <gtest/gtest.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/graph/build_graph.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <cmath>
 

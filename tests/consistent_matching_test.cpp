@@ -7,11 +7,11 @@
 // TOPOEVAL_DEBUG=1 prints every case; TOPOEVAL_DUMP_DIR=folder draws them.
 
 #include <gtest/gtest.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/GraphMatcher.h>
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 #include <mrpt_topoeval/output.h>
 
 #include <Eigen/Geometry>
@@ -23,7 +23,7 @@
 #include <optional>
 #include <set>
 
-#include "../libmrpt_topoeval/src/internal/MatchView.h"
+#include "../libmrpt_topoeval/src/graph/MatchView.h"
 #include "synthetic_maps.h"
 #include "test_paths.h"
 

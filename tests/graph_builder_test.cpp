@@ -5,8 +5,8 @@
 // branch's two corners are equidistant (y = 6.5625 for the map below).
 
 #include <gtest/gtest.h>
-#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 
 #include <algorithm>
 #include <cmath>

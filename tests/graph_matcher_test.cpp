@@ -4,12 +4,12 @@
 // that every matched vertex lands where the transform puts its ground-truth partner.
 
 #include <gtest/gtest.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/GraphMatcher.h>
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/maps/load_map.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 #include <mrpt_topoeval/output.h>
 
 #include <algorithm>

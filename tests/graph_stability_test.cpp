@@ -6,9 +6,9 @@
 // i.e. half the L1 distance between the histograms over the vertex count).
 
 #include <gtest/gtest.h>
-#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/output.h>
 

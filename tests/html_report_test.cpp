@@ -5,9 +5,9 @@
 // its script needs. The page in a browser: tests/browser/check_reports.py (html_report_browser).
 
 #include <gtest/gtest.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/html_report.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <cmath>
 #include <string>

@@ -4,9 +4,9 @@
 // partner is the map vertex where the transform puts it; ICP must rate that one the highest.
 
 #include <gtest/gtest.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/graph/build_graph.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <cmath>
 #include <functional>

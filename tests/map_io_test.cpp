@@ -798,7 +798,7 @@ TEST(MapIoRealData, ShareCopiesLoad)
 
 // ------------------------------------------------------------------ serialized layouts
 //
-// internal/serialized_layout.h mirrors MRPT 2.5.8's readers field by field, so that length
+// maps/serialized_layout.h mirrors MRPT 2.5.8's readers field by field, so that length
 // fields are checked before MRPT allocates. Whether it mirrors them right is measured here
 // against the MRPT that is installed: objects of every version of every accepted class, with
 // every flag that changes the layout, are built byte by byte; the check must consume exactly

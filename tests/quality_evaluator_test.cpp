@@ -5,13 +5,14 @@
 #include <gtest/gtest.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
-#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/evaluation/evaluate_match.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -20,7 +21,7 @@
 #include <iostream>
 #include <limits>
 
-#include "../libmrpt_topoeval/src/internal/horn.h"
+#include "../libmrpt_topoeval/src/geometry/horn.h"
 #include "synthetic_maps.h"
 #include "test_paths.h"
 

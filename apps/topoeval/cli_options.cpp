@@ -2,8 +2,8 @@
 #include "cli_options.h"
 
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <algorithm>
 #include <cctype>

@@ -3,11 +3,11 @@
 // accuracies, local consistency, brokenness and one quality score, printed as a brief (or,
 // with --verbose, full) report; optionally written as JSON and drawn like the paper's Fig. 7.
 
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 #include <mrpt_topoeval/report_json.h>
 
 #include <algorithm>

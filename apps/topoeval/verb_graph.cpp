@@ -2,8 +2,8 @@
 // `topoeval graph MAP`: builds the Topology Graph of one map, prints a one-screen summary and
 // optionally writes it as JSON, as a picture, and as one picture per construction step.
 
-#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/graph_json.h>
 #include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/output.h>

@@ -3,14 +3,14 @@
 // prints the counts of the paper's Table II; optionally writes the match as JSON and as a
 // picture like the paper's Fig. 5 and 7.
 
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/GraphMatcher.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/drawing.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/match_json.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 #include <mrpt_topoeval/output.h>
 #include <mrpt_topoeval/pipeline/evaluate.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <algorithm>
 #include <iostream>

@@ -3,11 +3,11 @@
 // prints them ranked per attribute and overall, like the paper's Table I; optionally as CSV.
 
 #include <mrpt/core/exceptions.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <algorithm>
 #include <atomic>

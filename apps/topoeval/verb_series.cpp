@@ -2,8 +2,7 @@
 // `topoeval series GT MAP...`: the scoring of `rawlog` over maps saved by another SLAM system
 // (a map every N steps): the same scores.csv and scores.png (doc/rawlog.md).
 
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/html_report.h>
 #include <mrpt_topoeval/json/JsonWriter.h>
 #include <mrpt_topoeval/maps/load_map.h>

@@ -7,7 +7,7 @@
 #include <map>
 #include <opencv2/imgproc.hpp>
 
-#include "internal/horn.h"
+#include "geometry/horn.h"
 
 namespace mrpt_topoeval::validation
 {

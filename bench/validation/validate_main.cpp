@@ -3,9 +3,10 @@
 // reports how often the matcher is right. Threads across cases; deterministic for a seed.
 
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/json/JsonWriter.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <algorithm>
 #include <atomic>
@@ -20,7 +21,6 @@
 #include <thread>
 
 #include "corpus.h"
-#include "internal/JsonWriter.h"
 #include "scoring.h"
 #include "summary.h"
 
@@ -176,7 +176,7 @@ std::string casesCsv(const std::vector<CaseResult>& results)
 std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum,
                       const Options& opt, const std::vector<std::string>& notes)
 {
-    internal::JsonWriter j;
+    JsonWriter j;
     j.beginObject();
     j.key("seed").value(static_cast<std::uint64_t>(opt.corpus.seed));
     j.key("quick").value(opt.corpus.quick);

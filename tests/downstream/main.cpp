@@ -3,7 +3,12 @@
 // junction of degree 4 (and otherwise only dead ends).
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt_topoeval/graph/build_graph.h>
+// The deprecated header names still compile in an installed package (they forward).
 #include <mrpt_topoeval/GraphBuilder.h>
+#include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/VertexSimilarity.h>
 
 #include <cmath>
 #include <exception>

@@ -2,11 +2,11 @@
 #pragma once
 
 #include <mrpt/config/CLoadableOptions.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/GraphMatcher.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
+#include <mrpt_topoeval/evaluation/evaluate_match.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/maps/load_map.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <string>
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <mrpt_topoeval/GraphMatch.h>
+#include <mrpt_topoeval/geometry/Transform2D.h>
 
 #include <Eigen/Core>
 #include <map>
@@ -10,13 +11,6 @@
 
 namespace mrpt_topoeval
 {
-/** A rigid 2D transform taking map coordinates into the ground truth's frame (T_gt_map). */
-struct Transform2D
-{
-    double x_m = 0.0, y_m = 0.0, yaw_deg = 0.0;
-    Eigen::Vector2d apply(const Eigen::Vector2d& p) const;
-};
-
 /** Position error of matched vertices (paper IV: global and relative accuracy). */
 struct Accuracy
 {

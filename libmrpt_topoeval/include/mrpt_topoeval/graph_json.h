@@ -1,8 +1,8 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #pragma once
 
-#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/TopologyGraph.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 
 #include <string>
 

@@ -14,19 +14,21 @@
 
 // Errors: InputError (bad input), OutputError (cannot write).
 #include <mrpt_topoeval/errors.h>
+// geometry: the rigid 2D transform (T_gt_map) of matches and reports.
+#include <mrpt_topoeval/geometry/Transform2D.h>
 // maps: map files -> mrpt::maps::COccupancyGridMap2D.
 #include <mrpt_topoeval/maps/load_map.h>
 // graph: the Topology Graph of a grid (paper II).
-#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/TopologyGraph.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 // similarity: vertex similarity, attributes or ICP (paper III-A).
-#include <mrpt_topoeval/VertexSimilarity.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 // matching: isomorphism, neighbour growing, consistent groups (paper III-B).
 #include <mrpt_topoeval/GraphMatch.h>
-#include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 // evaluation: coverage, accuracies, consistency, brokenness, quality (paper IV).
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/QualityReport.h>
+#include <mrpt_topoeval/evaluation/evaluate_match.h>
 // outputs: JSON, pictures, score rows over time, the HTML report, atomic files.
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/graph_json.h>

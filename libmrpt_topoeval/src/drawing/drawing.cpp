@@ -1,7 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
-#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 
 #include <algorithm>
 #include <array>

@@ -2,11 +2,10 @@
 // Paper IV: map attributes from a match of two Topology Graphs, and the scores built on them.
 
 #include <mrpt/config/CConfigFileBase.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/GraphMatcher.h>
-#include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/evaluation/evaluate_match.h>
+#include <mrpt_topoeval/graph/build_graph.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 
 #include <algorithm>
 #include <chrono>
@@ -15,9 +14,9 @@
 #include <queue>
 #include <sstream>
 
-#include "internal/MatchView.h"
-#include "internal/horn.h"
-#include "internal/validation.h"
+#include "common/validation.h"
+#include "geometry/horn.h"
+#include "graph/MatchView.h"
 
 namespace mrpt_topoeval
 {

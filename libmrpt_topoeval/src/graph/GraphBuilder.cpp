@@ -1,7 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include <mrpt/config/CConfigFileBase.h>
-#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 
 #include <chrono>
 #include <cmath>
@@ -9,11 +9,11 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "internal/GraphEditor.h"
-#include "internal/attributes.h"
-#include "internal/outer_boundary.h"
-#include "internal/validation.h"
-#include "internal/voronoi_cgal.h"
+#include "common/validation.h"
+#include "graph/GraphEditor.h"
+#include "graph/attributes.h"
+#include "skeleton/outer_boundary.h"
+#include "skeleton/voronoi_cgal.h"
 
 namespace mrpt_topoeval
 {

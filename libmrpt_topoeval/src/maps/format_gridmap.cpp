@@ -150,7 +150,7 @@ private:
     std::string m_error;
 };
 
-/** Walks the whole serialized grid (internal/serialized_layout.h) before MRPT reads it, so
+/** Walks the whole serialized grid (maps/serialized_layout.h) before MRPT reads it, so
  * that no length field can make MRPT allocate more than the grid's cells (checked against
  * max_cells) and the bytes the file really holds. */
 void checkGridLayout(const std::string& path, const MapLoadOptions& opts)

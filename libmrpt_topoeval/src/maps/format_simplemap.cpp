@@ -158,7 +158,7 @@ std::vector<unsigned char> decompressAll(const std::string& path)
     return data;
 }
 
-/** Walks the whole serialized simple map (internal/serialized_layout.h) before MRPT reads
+/** Walks the whole serialized simple map (maps/serialized_layout.h) before MRPT reads
  * it: MRPT sizes its keyframe list, observation lists, scans and strings from counts stored in
  * the file before it reads the data they announce, so every count is checked against the
  * bytes that really follow it. The decompressed file is in memory: the check knows its end. */

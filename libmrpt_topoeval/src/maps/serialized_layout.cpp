@@ -1,6 +1,6 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 // The serialized layouts of the classes topoeval checks before MRPT reads them, mirrored from
-// MRPT 2.5.8's serializeFrom(), version by version (internal/serialized_layout.h says why).
+// MRPT 2.5.8's serializeFrom(), version by version (maps/serialized_layout.h says why).
 
 #include "maps/serialized_layout.h"
 

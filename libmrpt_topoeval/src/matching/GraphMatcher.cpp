@@ -2,14 +2,14 @@
 // Matching two Topology Graphs: the paper's method (III-B: isomorphisms first, then neighbour
 // growing) or groups of geometrically consistent pairs (method = consistent).
 
-#include <mrpt_topoeval/GraphMatcher.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 
 #include <algorithm>
 #include <chrono>
 #include <functional>
 
-#include "internal/matching.h"
+#include "matching/matching.h"
 
 namespace mrpt_topoeval
 {

@@ -1,12 +1,12 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include <mrpt/config/CConfigFileBase.h>
-#include <mrpt_topoeval/GraphMatcher.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 
 #include <cmath>
 #include <sstream>
 
-#include "internal/validation.h"
+#include "common/validation.h"
 
 namespace mrpt_topoeval
 {

@@ -16,8 +16,8 @@
 #include <set>
 #include <tuple>
 
-#include "internal/horn.h"
-#include "internal/matching.h"
+#include "geometry/horn.h"
+#include "matching/matching.h"
 
 namespace mrpt_topoeval::internal
 {

@@ -6,7 +6,7 @@
 #include <deque>
 #include <numeric>
 
-#include "internal/matching.h"
+#include "matching/matching.h"
 
 namespace mrpt_topoeval::internal
 {

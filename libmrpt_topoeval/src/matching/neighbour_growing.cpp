@@ -6,7 +6,7 @@
 #include <queue>
 #include <tuple>
 
-#include "internal/matching.h"
+#include "matching/matching.h"
 
 namespace mrpt_topoeval::internal
 {

@@ -14,10 +14,10 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/slam/CMetricMapBuilderICP.h>
 #include <mrpt/system/datetime.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
 #include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/graph/build_graph.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <chrono>
 #include <cmath>

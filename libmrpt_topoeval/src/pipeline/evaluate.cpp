@@ -1,10 +1,10 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 // The one-call pipeline: both graphs, vertex similarity, match, evaluation (paper II-IV).
 
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/GraphMatcher.h>
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/evaluation/evaluate_match.h>
+#include <mrpt_topoeval/graph/build_graph.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 #include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <chrono>

@@ -223,7 +223,7 @@ RawlogReader::Status RawlogReader::next(mrpt::serialization::CSerializable::Ptr&
     obj.reset();
     const std::string entry = "entry " + std::to_string(m_entries);
     // 1. The entry's layout is checked field by field while its bytes are read (see
-    //    internal/serialized_layout.h): MRPT sizes its containers from counts in the file
+    //    maps/serialized_layout.h): MRPT sizes its containers from counts in the file
     //    before reading the data they announce, so a count the entry cannot hold is refused
     //    here, before MRPT allocates anything for it.
     std::vector<unsigned char> bytes;

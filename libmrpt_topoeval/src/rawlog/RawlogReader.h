@@ -25,7 +25,7 @@ public:
     };
 
     /** Opens `path` (gz or plain). Entries of classes whose layout is not checked before MRPT
-     * reads them (cameras, IMU, GPS...: internal/serialized_layout.h) are read by MRPT as they
+     * reads them (cameras, IMU, GPS...: maps/serialized_layout.h) are read by MRPT as they
      * are if `read_unchecked_classes`, else refused as corrupt (the fuzz target's choice: it
      * exercises the check, not MRPT's readers of every sensor).
      * \throws InputError if it is missing or unreadable. */

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "drawing/graph_drawing.h"
-#include "internal/MatchView.h"
+#include "graph/MatchView.h"
 
 namespace mrpt_topoeval
 {

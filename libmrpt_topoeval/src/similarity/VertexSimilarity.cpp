@@ -2,13 +2,13 @@
 // Parameters of vertex similarity (paper III-A); the two approaches are in their own files.
 
 #include <mrpt/config/CConfigFileBase.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <cmath>
 #include <sstream>
 
-#include "internal/validation.h"
+#include "common/validation.h"
 
 namespace mrpt_topoeval
 {

@@ -1,13 +1,13 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 // Paper III-A, first approach: vertex similarity from the Topology Graph's attributes.
 
-#include <mrpt_topoeval/VertexSimilarity.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 
-#include "internal/MatchView.h"
+#include "graph/MatchView.h"
 
 namespace mrpt_topoeval
 {

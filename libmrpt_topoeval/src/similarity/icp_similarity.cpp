@@ -19,9 +19,9 @@
 #include <mrpt/poses/CPosePDF.h>
 #include <mrpt/slam/CICP.h>
 #include <mrpt/tfest/TMatchingPair.h>
-#include <mrpt_topoeval/GraphBuilder.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
 #include <mrpt_topoeval/errors.h>
+#include <mrpt_topoeval/graph/build_graph.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <algorithm>
 #include <atomic>
@@ -33,7 +33,7 @@
 #include <thread>
 #include <vector>
 
-#include "internal/MatchView.h"
+#include "graph/MatchView.h"
 
 namespace mrpt_topoeval
 {

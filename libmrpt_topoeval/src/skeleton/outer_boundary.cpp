@@ -1,5 +1,5 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
-#include "internal/outer_boundary.h"
+#include "skeleton/outer_boundary.h"
 
 #include <algorithm>
 #include <cmath>

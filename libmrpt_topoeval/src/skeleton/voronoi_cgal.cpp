@@ -2,7 +2,7 @@
 // The only translation unit that includes CGAL. Built with CGAL_NDEBUG: CGAL's debug checks make
 // the dual() calls linear each (quadratic extraction; see the notes in doc/).
 
-#include "internal/voronoi_cgal.h"
+#include "skeleton/voronoi_cgal.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -8,16 +8,12 @@
 //                                                        built once (rank, series, rawlog)
 // vertexSimilarity(...)                                  the similarity [VertexSimilarity] mode
 //                                                        chooses (attributes or ICP)
-//
-// The two evaluate() overloads are declared in <mrpt_topoeval/QualityEvaluator.h> until that
-// header is renamed (doc/architecture.md, "Left to do"); their definitions live here
-// (src/pipeline/evaluate.cpp).
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/Parameters.h>
-#include <mrpt_topoeval/QualityEvaluator.h>
+#include <mrpt_topoeval/QualityReport.h>
 #include <mrpt_topoeval/TopologyGraph.h>
-#include <mrpt_topoeval/VertexSimilarity.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <map>
 #include <string>
@@ -33,5 +29,20 @@ SimilarityMatrix vertexSimilarity(const TopologyGraph& gt,
                                   const mrpt::maps::COccupancyGridMap2D& map_grid,
                                   const VertexSimilarityParameters& p,
                                   std::map<std::string, double>* timing_ms = nullptr);
+
+/** The one-call pipeline: both graphs, vertex similarity (attributes or ICP as configured),
+ * match, evaluation. Graphs are returned through the pointers if given. */
+QualityReport evaluate(const mrpt::maps::COccupancyGridMap2D& ground_truth,
+                       const mrpt::maps::COccupancyGridMap2D& map, const Parameters& params,
+                       TopologyGraph* gt_graph = nullptr, TopologyGraph* map_graph = nullptr);
+
+/** evaluate() with the ground truth's graph already built, `gt_graph` =
+ * buildTopologyGraph(ground_truth, params.graph): for scoring many maps against one ground truth
+ * (rank, series, rawlog snapshots) without building its graph again for each. The ground
+ * truth's grid is still needed by ICP similarity. timing_ms "graphs" is the map's graph only. */
+QualityReport evaluate(const TopologyGraph& gt_graph,
+                       const mrpt::maps::COccupancyGridMap2D& ground_truth,
+                       const mrpt::maps::COccupancyGridMap2D& map, const Parameters& params,
+                       TopologyGraph* map_graph = nullptr);
 
 }  // namespace mrpt_topoeval

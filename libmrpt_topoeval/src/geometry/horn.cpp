@@ -1,5 +1,5 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
-#include "internal/horn.h"
+#include "geometry/horn.h"
 
 #include <cmath>
 

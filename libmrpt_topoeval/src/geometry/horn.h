@@ -1,7 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #pragma once
 
-#include <mrpt_topoeval/QualityReport.h>
+#include <mrpt_topoeval/geometry/Transform2D.h>
 
 #include <Eigen/Core>
 #include <vector>

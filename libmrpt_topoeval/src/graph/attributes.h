@@ -1,10 +1,10 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #pragma once
 
-#include <mrpt_topoeval/GraphBuilder.h>
 #include <mrpt_topoeval/TopologyGraph.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 
-#include "internal/GraphEditor.h"
+#include "graph/GraphEditor.h"
 
 namespace mrpt_topoeval::internal
 {

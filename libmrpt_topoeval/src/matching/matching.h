@@ -3,11 +3,11 @@
 
 // The two stages of the matcher (paper III-B), on the matching views of both graphs.
 
-#include <mrpt_topoeval/GraphMatcher.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 
 #include <vector>
 
-#include "internal/MatchView.h"
+#include "graph/MatchView.h"
 
 namespace mrpt_topoeval::internal
 {

@@ -1,0 +1,68 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt_topoeval/GraphMatch.h>
+#include <mrpt_topoeval/QualityReport.h>
+#include <mrpt_topoeval/TopologyGraph.h>
+
+#include <string>
+
+namespace mrpt_topoeval
+{
+/** Parameters of the map attributes and scores (paper IV), INI section `[QualityEvaluator]`. */
+struct QualityParameters : public mrpt::config::CLoadableOptions
+{
+    /** Local consistency classes by shortest graph distance: short < this [m] ... */
+    double consistency_short_max_m = 3.0;
+    /** ... medium < this <= long [m]. */
+    double consistency_medium_max_m = 9.0;
+    /** A brokenness group grows while its mean squared alignment error stays at or below
+     * this [m^2] (paper: SquaredErrorThreshold). */
+    double brokenness_max_squared_error_m2 = 0.2;
+    /** Groups smaller than this are not counted (paper: MinNumberVertices = 5) [1]. */
+    int brokenness_min_vertices = 5;
+    /** A group of at least this many vertices but fewer than brokenness_min_vertices still
+     * counts when every counted group places its map vertices at least
+     * brokenness_part_min_gap_m2 (mean squared) from where its own fit does: a small part
+     * turned against the rest. = brokenness_min_vertices is the paper's rule [1]. */
+    int brokenness_min_part_vertices = 3;
+    /** See brokenness_min_part_vertices [m^2]. */
+    double brokenness_part_min_gap_m2 = 1.0;
+    /** A pair's position error up to this share of its vertices' clearance (the larger of the
+     * two) is vertex jitter, not map error: a vertex in a room sits on the medial axis, which
+     * slides with furniture, noise and resolution by a fraction of the room's half width.
+     * Relative accuracy and local consistency count only the error beyond it. 0 = the paper's
+     * plain errors [ratio]. */
+    double vertex_slack_share = 0.10;
+    /** A pair's error counts at most this much in relative accuracy and local consistency, and
+     * the relative alignment is refitted without pairs beyond it: one wrong pair must not decide
+     * a score. 0 = the paper's plain RMS [m]. */
+    double outlier_distance_m = 1.0;
+    /** Accuracy score = 1 / (1 + rmse / this) [m]. */
+    double accuracy_scale_m = 0.5;
+    /** Consistency score = 1 / (1 + mean error / this) [m]. */
+    double consistency_scale_m = 0.25;
+    /** Weights of the scores in `quality` [1]. */
+    double weight_coverage = 1.0;
+    double weight_relative_accuracy = 1.0;
+    double weight_consistency = 1.0;
+    double weight_brokenness = 1.0;
+    /** Accuracy, consistency and brokenness describe the matched part only: below this
+     * coverage the quality is multiplied by sqrt(coverage / this). 0 = the paper's plain
+     * weighted mean [ratio]. */
+    double min_trusted_coverage = 0.5;
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+    /** \throws InputError naming the field and value. */
+    void validate() const;
+};
+
+/** Paper IV: coverage, global and relative accuracy (Horn's closed form in double precision on
+ * centred points), local consistency per class of graph distance, brokenness groups, and one
+ * quality score, from a match of the ground truth's graph with the map's. */
+QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGraph& map,
+                            const GraphMatch& match, const QualityParameters& params = {});
+
+}  // namespace mrpt_topoeval

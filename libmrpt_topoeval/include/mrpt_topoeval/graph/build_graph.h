@@ -1,0 +1,129 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt_topoeval/TopologyGraph.h>
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <string>
+
+namespace mrpt_topoeval
+{
+/** Thresholds of the Topology Graph construction (paper II-B), INI section `[GraphBuilder]`.
+ * Lengths in metres, so one configuration fits maps of any resolution. */
+struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
+{
+    /** A cell is an obstacle (a Voronoi site) when P(occupied) >= this [probability]. */
+    double occupied_min_prob = 0.65;
+    /** A cell is free space when P(occupied) <= this [probability]. */
+    double free_max_prob = 0.35;
+    /** Unknown specks inside free space narrower than about twice this are filled as free
+     * (a morphological closing of the free cells; walls are never changed): the dotted free
+     * space of laser fans looks the same at every resolution. 0 disables [m]. */
+    double unknown_fill_radius_m = 0.10;
+    /** Gaps in walls up to about twice this wide are closed before the Voronoi diagram (a
+     * morphological closing of the obstacle cells with a disc of this radius): one-cell holes
+     * that rotation, resampling or sensor noise open in a wall neither join its two sides nor
+     * cut it into pieces, and its notches grow no branches. Points with at least this
+     * clearance keep their clearance, so it must stay below `min_clearance_m`. 0 disables [m]. */
+    double wall_gap_close_radius_m = 0.10;
+    /** Free-standing obstacles (8-connected occupied or unknown cells surrounded by free space,
+     * not touching the grid's edge) whose smallest enclosing circle is narrower than this
+     * become free space: specks of sensor noise, table and chair legs, small furniture, which
+     * otherwise put small loops and dead ends into a room that the same room without them does
+     * not have. Columns narrower than this go too, in every map alike. 0 disables [m]. */
+    double min_island_size_m = 0.25;
+    /** Unknown cells next to free space bound it like obstacles: the graph is the skeleton of
+     * the known free space, so half-seen areas (laser fans through doors, frontiers) do not
+     * grow branches that change with every pass of the robot [bool]. */
+    bool unknown_is_obstacle = true;
+    /** Keep only skeleton points lying on free cells: the skeleton stops where the map stops
+     * being known (unexplored rooms, the outside of a robot map) [bool]. */
+    bool skeleton_on_free_cells_only = true;
+    /** Voronoi edges closer than this to an obstacle are dropped (paper: 30 cm) [m]. */
+    double min_clearance_m = 0.30;
+    /** Dead-end edges shorter than this are removed (paper II-B "short dead-end edges") [m]. */
+    double prune_dead_end_length_m = 0.50;
+    /** Dead ends into convex corners of free space are removed too: a medial-axis branch into
+     * a corner is sqrt(2) times as long as the clearance it loses, so a dead end shorter than
+     * this factor times (clearance at its junction - clearance at its end), measured as the
+     * straight distance between its ends, is such a branch,
+     * whatever the room's size. 0 disables [ratio]. */
+    double corner_spur_ratio = 1.5;
+    /** A dead end whose end lies within this factor times its junction's clearance of the
+     * junction ends inside the junction's empty disc: it shows nothing the junction does not,
+     * and flips in and out with small changes of the walls (a room's end next to its door).
+     * It is removed. 0 disables [ratio]. */
+    double junction_disc_ratio = 1.0;
+    /** ... but only dead ends shorter than this (straight distance) are judged by the disc
+     * rule: a long branch of a big room is a real feature even inside the room's disc [m]. */
+    double junction_disc_max_length_m = 1.50;
+    /** Remaining dead-end edges shorter than this, and their end vertex, are marked spurious
+     * (paper II-C) [m]. */
+    double spurious_dead_end_length_m = 1.00;
+    /** Radius of the alpha shape whose longest polygon is the map's outer boundary; vertices
+     * outside it are removed (paper: 2.5 m) [m]. 0 disables the cut. */
+    double alpha_radius_m = 2.50;
+    /** Connected parts of the graph whose total edge length is at least this are all kept; the
+     * longest part is always kept. The paper keeps only the biggest part, but a map cut into
+     * pieces by a narrow or closed door then loses whole regions, and which piece is biggest
+     * can flip between two maps of one place. A large value keeps only the biggest, as the
+     * paper does [m]. */
+    double min_component_length_m = 5.0;
+    /** Vertices joined by an edge shorter than this are merged into one vertex at their mean
+     * position (paper II-B, last step) [m]. */
+    double join_distance_m = 0.60;
+    /** An edge's direction at a vertex is measured from the path point at a quarter of this
+     * distance to the point at this distance (capped at a quarter and half of the edge) [m]. */
+    double edge_direction_distance_m = 2.00;
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+    /** \throws InputError naming the field and value, e.g.
+     * "min_clearance_m = -1 violates min_clearance_m > 0". */
+    void validate() const;
+};
+
+/** What happened while building, for summaries and benchmarks. */
+struct GraphBuildStats
+{
+    std::size_t islands_removed = 0;     //!< Free-standing obstacles below min_island_size_m.
+    std::size_t sites = 0;               //!< Obstacle cells used as Voronoi sites.
+    std::size_t voronoi_vertices = 0;    //!< Voronoi vertices inside the grid (after merging).
+    std::size_t voronoi_edges = 0;       //!< Voronoi edges inside the grid.
+    std::size_t voronoi_edges_kept = 0;  //!< ... with enough clearance.
+    std::size_t vertices_initial = 0;    //!< Topology Graph before pruning.
+    std::size_t vertices_after_prune = 0;
+    std::size_t vertices_after_alpha = 0;
+    std::size_t vertices_after_component = 0;
+    std::size_t vertices_final = 0;
+    std::size_t alpha_polygon_segments = 0;
+    /** Milliseconds per step, keyed by step name; "total" is the whole call. */
+    std::map<std::string, double> timing_ms;
+};
+
+/** Called after each construction step with the graph as it stands then (attributes computed,
+ * numbering canonical), to draw or inspect the steps. Step names, in order: "voronoi" (the
+ * clearance-filtered Voronoi diagram with degree-2 chains merged), "pruned", "alpha_cut",
+ * "largest_component", "joined" (the final graph). */
+using GraphBuildObserver = std::function<void(const std::string& step, const TopologyGraph&)>;
+
+/** Builds the Topology Graph of a grid map (paper II-B and II-C): Voronoi diagram of the
+ * obstacle cells, clearance filter, degree-2 chains merged into edges, short dead ends pruned,
+ * cut to the outer alpha shape, connected parts of a useful size (the paper: the largest
+ * only), close vertices joined, attributes.
+ *
+ * Deterministic: the same grid and parameters give the same graph, with vertices numbered by
+ * position. A map with no obstacles or no free space gives an empty graph and a warning; a
+ * graph that is a pure cycle (no vertex of degree != 2) gives one degree-2 vertex on a loop
+ * edge (see doc/topology_graph.md).
+ * \throws InputError if `params.validate()` fails. */
+TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
+                                 const GraphBuilderParameters& params = {},
+                                 GraphBuildStats* stats = nullptr,
+                                 const GraphBuildObserver& observer = {});
+
+}  // namespace mrpt_topoeval

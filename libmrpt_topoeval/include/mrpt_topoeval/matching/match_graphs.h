@@ -1,0 +1,150 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt_topoeval/GraphMatch.h>
+#include <mrpt_topoeval/TopologyGraph.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
+
+#include <string>
+
+namespace mrpt_topoeval
+{
+/** Which matcher pairs the vertices (doc/matching.md). */
+enum class MatchMethod
+{
+    /** Groups of pairs verified by local geometric consistency (distances between the
+     * vertices of a group agree in both maps), found as maximum cliques of a pairwise
+     * consistency graph and grown through graph neighbours. Tolerates local topology changes. */
+    Consistent,
+    /** The paper's (III-B): subgraph isomorphism by wavefront, then neighbour growing. */
+    Paper
+};
+
+/** "consistent" / "paper". */
+std::string toString(MatchMethod m);
+/** Parses "consistent" / "paper". \throws InputError naming the value. */
+MatchMethod matchMethodFromString(const std::string& s);
+
+/** Parameters of the structural matcher (paper III-B), INI section `[GraphMatcher]`. Global
+ * vertex positions are never used: robot maps have wrong global frames. The consistent method
+ * compares only distances between vertices of one map with those of the other. */
+struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
+{
+    MatchMethod method = MatchMethod::Consistent;
+
+    // --- method = paper
+    /** Two matched edges must agree in length within factor x the longer + allowance (paper:
+     * "the length of the edges must coincide at least to a certain degree") [ratio]. */
+    double edge_length_factor = 0.25;
+    double edge_length_allowance_m = 0.75;  //!< [m]
+    /** Matched edges at a vertex must leave it at angles (relative to the ring's other
+     * edges) that differ by at most this [deg]. */
+    double max_angle_difference_deg = 40.0;
+    /** Pairs less similar than this are never assigned by the isomorphism [0..1]. */
+    double min_isomorphism_similarity = 0.4;
+    /** An isomorphism is accepted when it has at least this many vertices; on graphs too
+     * small for that, at least min_isomorphism_share of the smaller graph's matchable vertices
+     * (and never fewer than 3). Small isomorphisms are common between different buildings
+     * made of the same corridors and rooms: 8 kept every such pair of our test maps apart [1]. */
+    int min_isomorphism_vertices = 8;
+    double min_isomorphism_share = 0.75;  //!< [ratio]
+    /** Branches the wavefront may explore per seed pair before it takes the best branch
+     * without exploring further (bounds recursion on repetitive maps) [1]. */
+    int max_branches_per_seed = 64;
+    /** Run neighbour growing after the isomorphisms (paper III-B end) [bool]. */
+    bool neighbour_growing = true;
+    /** Neighbour growing assigns a pair only if its similarity is at least this [0..1]. */
+    double min_growing_similarity = 0.5;
+    /** Neighbour growing's relaxed edge-length check: factor and allowance [ratio], [m]. */
+    double growing_edge_length_factor = 0.5;
+    double growing_edge_length_allowance_m = 2.0;
+
+    // --- method = consistent (doc/matching.md, "Consistent groups")
+    /** Candidate partners of each ground-truth vertex: its most similar map vertices, and the
+     * map vertices for which it is among the most similar (a repeated corridor junction has
+     * several look-alikes; the geometry chooses) [1]. */
+    int candidates_per_vertex = 5;
+    /** Candidates are at least this similar [0..1]. Low: geometry, not similarity, decides;
+     * similarity only keeps the consistency graph small. */
+    double min_candidate_similarity = 0.1;
+    /** Candidate and grown pairs differ in degree by at most this: a small loop or an extra
+     * dead end changes a junction's degree by one [1]. */
+    int max_degree_difference = 1;
+    /** Two pairs (g1, m1), (g2, m2) are consistent when |d(g1, g2) - d(m1, m2)| is at most
+     * distance_tolerance_m + distance_tolerance_ratio x the longer distance +
+     * clearance_tolerance_share x (clearance of g1 + clearance of g2). The absolute term
+     * covers skeleton noise [m]; */
+    double distance_tolerance_m = 0.25;
+    /** ... the relative term slow bending and scale errors of robot maps [ratio]; */
+    double distance_tolerance_ratio = 0.03;
+    /** ... the clearance term the position of a room's vertex, defined only up to its room's
+     * medial-axis plateau (about its clearance) [ratio]. */
+    double clearance_tolerance_share = 0.15;
+    /** A group (maximum consistent set) is accepted when it has at least this many pairs;
+     * smaller consistent sets occur by chance between unrelated places [1]. */
+    int min_group_vertices = 5;
+    /** On a graph too small for min_group_vertices (a plan of a few rooms), a group of at least
+     * min_isomorphism_share of the smaller graph's matchable vertices (and 3) is accepted when
+     * its pairs' mean vertex similarity is at least this: three consistent distances alone are
+     * common between unrelated places [0..1]. */
+    double min_small_group_similarity = 0.7;
+    /** ... after keeping its biggest part linked in both graphs: two pairs are linked when
+     * their ground-truth vertices are within this many edges of each other, and so are their
+     * map vertices (2: one vertex may be missing or extra in between). Consistency by chance
+     * scatters its pairs over the graphs [1]. */
+    int support_hops = 2;
+    /** ... and when its vertices span at least this far in the ground truth (a group of
+     * vertices all within a few metres fixes no geometry) [m]. */
+    double min_group_extent_m = 4.0;
+    /** Most groups (each one rigid part of the map: a broken map gives one per part) [1]. */
+    int max_groups = 8;
+    /** Branch-and-bound steps per clique search; when spent the best clique so far is taken
+     * (bounds the time on dense consistency graphs; deterministic) [1]. */
+    int max_clique_steps = 200000;
+    /** A further group (another part of a broken map) is the best consensus of the candidates
+     * still free: the transform of two linked, consistent pairs at least this far apart in the
+     * ground truth, and the pairs it puts in place (near a break a clique mixes two parts, and
+     * a fit of all is a compromise); 2 m keeps the rotation of two vertices known within
+     * 0.25 m within about 7 degrees, under the 10 degrees of a small break [m]. */
+    double min_consensus_baseline_m = 2.0;
+    /** Once a group is accepted, a further group (a small part of a broken map) needs only
+     * this many pairs when it bridges to an accepted group (part_bridge_ratio) and their mean
+     * similarity is at least min_small_group_similarity: the 5 of the paper miss the parts of
+     * a building cut in three or four [1]. */
+    int min_part_group_vertices = 3;
+    /** A further group next to an accepted one in the ground truth (support_hops) must have a
+     * bridge: one such neighbour pair whose map distance equals its ground-truth distance
+     * within distance_tolerance_m + clearance share + this x the distance (a turn of up to 30
+     * degrees at the cut changes it by about half). Rejects chance groups that sit next to an
+     * accepted group in the ground truth but elsewhere in the map [ratio]. */
+    double part_bridge_ratio = 0.5;
+    /** Growing: an unmatched vertex near a group is paired where the rigid fit of the group's
+     * pairs within this radius of it predicts its partner [m]; */
+    double growing_radius_m = 12.0;
+    /** ... the prediction must fall within position_tolerance_m + clearance_tolerance_share x
+     * clearance of the vertex [m]; */
+    double position_tolerance_m = 0.4;
+    /** ... and the pair must be at least this similar [0..1]. */
+    double min_consistent_growing_similarity = 0.2;
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+    /** \throws InputError naming the field and value. */
+    void validate() const;
+};
+
+/** Matches a ground-truth graph and a map's graph. method = consistent (default): groups of
+ * candidate pairs whose mutual distances agree in both maps (maximum cliques of the pairwise
+ * consistency graph, one group per rigid part), grown by local rigid fits; in the result a
+ * group is an "isomorphism" and grown pairs are "neighbour growing". method = paper (III-B):
+ * subgraph isomorphisms by wavefront propagation from every unassigned vertex (Algorithm 1),
+ * biggest first, then neighbour growing from the match's border. Spurious vertices are skipped.
+ * `similarity` has a row per ground-truth vertex and a column per map vertex (attributeSimilarity()
+ * or icpSimilarity()). Never throws on small or empty graphs: the match is then empty or partial,
+ * with a message. Deterministic. \throws InputError on parameters or a matrix of wrong size. */
+GraphMatch matchGraphs(const TopologyGraph& ground_truth, const TopologyGraph& map,
+                       const SimilarityMatrix& similarity,
+                       const GraphMatcherParameters& params = {});
+
+}  // namespace mrpt_topoeval
