@@ -297,8 +297,8 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                std::binary_search(near_map[x.map].begin(), near_map[x.map].end(), y.map);
     };
     // Once a group is accepted the maps are known to show one place, and a further part (a
-    // broken map's small part) needs only min_part_group_vertices pairs, near an accepted group
-    // in the ground truth (checked in settle()).
+    // broken map's small part) needs only min_part_group_vertices pairs, with a bridge to an
+    // accepted group (checked in settle()).
     auto needed = [&]()
     {
         return !out.cores.empty() && p.min_part_group_vertices < min_size
@@ -307,7 +307,7 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
-    // biggest part linked in both graphs; then the size, extent, link and similarity rules.
+    // biggest part linked in both graphs; then the size, extent, bridge and similarity rules.
     // Returns false (and the group as far as it got) when it is not acceptable.
     auto settle = [&](std::vector<int>& group)
     {
