@@ -356,18 +356,25 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
         }
         return internal::hornAlign(pg, pm, mse);
     };
-    auto placementGap = [&](const BrokennessGroup& x, const BrokennessGroup& y)
+    // Sum over `vs`' map vertices q of |T_x(q) - T_y(q)|^2: how differently two transforms place
+    // the same part.
+    auto squaredGap = [&](const Transform2D& x, const Transform2D& y, const std::vector<int>& vs)
     {
         double sum = 0.0;
-        std::size_t n = 0;
-        for (const auto* g : {&x, &y})
-            for (int v : g->gt_vertices)
-            {
-                const Eigen::Vector2d q = map.vertices[partner[v]].position_m;
-                sum += (x.transform.apply(q) - y.transform.apply(q)).squaredNorm();
-                ++n;
-            }
-        return n ? sum / double(n) : 0.0;
+        for (int v : vs)
+        {
+            const Eigen::Vector2d q = map.vertices[partner[v]].position_m;
+            sum += (x.apply(q) - y.apply(q)).squaredNorm();
+        }
+        return sum;
+    };
+    auto placementGap = [&](const BrokennessGroup& x, const BrokennessGroup& y)
+    {
+        const std::size_t n = x.gt_vertices.size() + y.gt_vertices.size();
+        return n ? (squaredGap(x.transform, y.transform, x.gt_vertices) +
+                    squaredGap(x.transform, y.transform, y.gt_vertices)) /
+                       double(n)
+                 : 0.0;
     };
     for (bool merged = true; merged;)
     {
@@ -433,18 +440,15 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     // against the rest, as the parts of a map broken three times often are.
     std::stable_sort(small.begin(), small.end(),
                      [](const auto& x, const auto& y) { return x.size() > y.size(); });
+    std::vector<char> in_group(gt.vertices.size(), 0);
+    for (const auto& g : b.groups)
+        for (int v : g.gt_vertices) in_group[v] = 1;
     if (!b.groups.empty())
         for (auto& cand : small)
         {
             std::vector<int> free;
             for (int v : cand)
-            {
-                bool used = false;
-                for (const auto& g : b.groups)
-                    used = used || std::find(g.gt_vertices.begin(), g.gt_vertices.end(), v) !=
-                                       g.gt_vertices.end();
-                if (!used) free.push_back(v);
-            }
+                if (!in_group[v]) free.push_back(v);
             if (static_cast<int>(free.size()) < p.brokenness_min_part_vertices) continue;
             BrokennessGroup grp;
             grp.gt_vertices = free;
@@ -452,16 +456,12 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
             if (grp.squared_error_m2 > p.brokenness_max_squared_error_m2) continue;
             bool separate = true;
             for (const auto& g : b.groups)
-            {
-                double gap = 0.0;
-                for (int v : free)
-                {
-                    const Eigen::Vector2d q = map.vertices[partner[v]].position_m;
-                    gap += (g.transform.apply(q) - grp.transform.apply(q)).squaredNorm();
-                }
-                separate = separate && gap / double(free.size()) >= p.brokenness_part_min_gap_m2;
-            }
-            if (separate) b.groups.push_back(std::move(grp));
+                separate = separate &&
+                           squaredGap(g.transform, grp.transform, free) / double(free.size()) >=
+                               p.brokenness_part_min_gap_m2;
+            if (!separate) continue;
+            for (int v : free) in_group[v] = 1;
+            b.groups.push_back(std::move(grp));
         }
     std::stable_sort(b.groups.begin(), b.groups.end(),
                      [](const auto& x, const auto& y)

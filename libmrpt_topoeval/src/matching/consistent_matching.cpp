@@ -497,6 +497,12 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     std::vector<int> group_of_gt(n_gt, -1);
     for (std::size_t g = 0; g < out.cores.size(); ++g)
         for (const auto& [a, b] : out.cores[g]) group_of_gt[a] = int(g);
+    // Vertices within two edges, once (every round asks them again).
+    std::vector<std::vector<int>> two_gt(n_gt), two_map(n_map);
+    for (int a = 0; a < n_gt; ++a) two_gt[a] = nearInGraph(ctx.gt, a, 2);
+    for (int b = 0; b < n_map; ++b) two_map[b] = nearInGraph(ctx.map, b, 2);
+    std::vector<int> all_map(static_cast<std::size_t>(n_map));
+    std::iota(all_map.begin(), all_map.end(), 0);
     for (const bool geometric : {false, true})
         for (int round = 0; round < n_gt; ++round)
         {
@@ -522,20 +528,19 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                         if (d <= p.growing_radius_m) near.emplace_back(d, x);
                     }
                     if (near.size() < 2) continue;
-                    for (int x : nearInGraph(ctx.gt, a, 2))
-                        if (group_of_gt[x] == int(g) && x != a)
-                        {
-                            linked = true;
-                            for (int y : nearInGraph(ctx.map, ctx.gt_to_map[x], 2))
-                                map_near.push_back(y);
-                        }
                     if (geometric)
+                        map_near = all_map;
+                    else
                     {
-                        map_near.resize(std::size_t(n_map));
-                        std::iota(map_near.begin(), map_near.end(), 0);
+                        for (int x : two_gt[a])
+                            if (group_of_gt[x] == int(g) && x != a)
+                            {
+                                linked = true;
+                                const auto& m2 = two_map[ctx.gt_to_map[x]];
+                                map_near.insert(map_near.end(), m2.begin(), m2.end());
+                            }
+                        if (!linked) continue;
                     }
-                    else if (!linked)
-                        continue;
                     std::sort(near.begin(), near.end());
                     if (near.size() > 8) near.resize(8);
                     std::vector<Eigen::Vector2d> ga, mb;
