@@ -453,6 +453,41 @@ TEST(GraphBuilder, ColumnsWiderThanTheIslandSizeStay)
     EXPECT_EQ(buildTopologyGraph(s.grid(), wide).edges.size(), 0u);
 }
 
+TEST(GraphBuilder, EnclosedUnknownInAHallBecomesFree)
+{
+    // A 6 m hall whose middle the laser crossed too sparsely to mark (a 2 m unknown square
+    // bordered by free space only): it is free space, so the hall is an empty room. Taken as an
+    // obstacle it would put a ring around it.
+    GridSketch s(8.0, 8.0);
+    s.carve(1.0, 1.0, 7.0, 7.0).unknown(3.0, 3.0, 5.0, 5.0);
+    GraphBuildStats st;
+    const TopologyGraph g = buildTopologyGraph(s.grid(), {}, &st);
+    EXPECT_EQ(st.unknown_regions_filled, 1u);
+    EXPECT_EQ(g.edges.size(), 0u);
+    GraphBuilderParameters off;
+    off.enclosed_unknown_min_free_share = 0.0;
+    const TopologyGraph ring = buildTopologyGraph(s.grid(), off);
+    ASSERT_EQ(ring.edges.size(), 1u);
+    EXPECT_EQ(ring.edges[0].from, ring.edges[0].to);
+}
+
+TEST(GraphBuilder, UnexploredRoomBehindADoorStaysUnknown)
+{
+    // The right room was only seen through its door (a free strip 0.8 m deep): its unknown rest
+    // is bounded mostly by walls, so it stays unknown and the graph stops at the door, as it
+    // does with the filling off. The unknown inside a thick wall (occupied all round) stays too.
+    GridSketch s = twoRooms();
+    s.unknown(6.2, 1.0, 11.2, 5.0).carve(6.2, 2.5, 7.0, 3.5);
+    s.fill(2.0, 1.0, 2.6, 2.0).unknown(2.15, 1.15, 2.45, 1.85);
+    GraphBuildStats st;
+    const TopologyGraph g = buildTopologyGraph(s.grid(), {}, &st);
+    EXPECT_EQ(st.unknown_regions_filled, 0u);
+    GraphBuilderParameters off;
+    off.enclosed_unknown_min_free_share = 0.0;
+    expectSameGraph(buildTopologyGraph(s.grid(), off), g);
+    for (const auto& v : g.vertices) EXPECT_LT(v.position_m.x(), 7.05);
+}
+
 TEST(GraphBuilder, OneCellWallGapDoesNotChangeTheGraph)
 {
     // One-cell slots through the 0.2 m wall: one far from the door, one 0.15 m beside it. The

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <opencv2/imgproc.hpp>
+#include <sstream>
 
 #include "geometry/horn.h"
 
@@ -111,6 +112,18 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
         ++s.matched;
         if (!isTrue(p.ground_truth, p.map))
         {
+            const auto& q = mapped[static_cast<std::size_t>(p.map)];
+            std::ostringstream line;
+            line << "gt " << p.ground_truth << " -> map " << p.map << " ("
+                 << (p.stage == MatchStage::NeighbourGrowing ? "grown" : "core") << "), ";
+            if (q)
+                line << "truth puts map " << p.map << " "
+                     << (*q - gt.vertices[static_cast<std::size_t>(p.ground_truth)].position_m)
+                            .norm()
+                     << " m from gt " << p.ground_truth;
+            else
+                line << "the truth does not place map " << p.map;
+            s.false_pairs.push_back(line.str());
             ++(p.stage == MatchStage::NeighbourGrowing ? s.false_grown : s.false_core);
             continue;
         }

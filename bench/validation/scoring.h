@@ -44,6 +44,9 @@ struct CaseScore
     std::size_t matched = 0, true_pairs = 0;
     /** False pairs made by a group's core (isomorphism) and by growing (neighbour growing). */
     std::size_t false_core = 0, false_grown = 0;
+    /** One line per false pair, for the pictures: "gt G -> map M (stage), truth puts M D m from
+     * G" (D absent when the truth does not place M). */
+    std::vector<std::string> false_pairs;
     double precision = 0.0;  //!< true / matched (NaN when nothing was matched).
     double recall = 0.0;     //!< true / gt_with_counterpart (NaN when there is no counterpart).
     int brokenness_found = 0;

@@ -458,6 +458,12 @@ int main(int argc, char** argv)
                 const fs::path png =
                     fs::path(opt.out) / "pictures" / (prefix + safeName(c.id) + ".png");
                 img.saveToFile(png.string());
+                if (!r.score.false_pairs.empty())
+                {
+                    std::string text;
+                    for (const auto& line : r.score.false_pairs) text += line + "\n";
+                    writeFileAtomically(fs::path(png).replace_extension(".false_pairs.txt"), text);
+                }
                 std::cerr << "validate: wrote " << png.string() << " ("
                           << r.score.matched - r.score.true_pairs << " false of " << r.score.matched
                           << ", recall " << numText(r.score.recall, 2) << ")\n";

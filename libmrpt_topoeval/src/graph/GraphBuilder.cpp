@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <unordered_map>
@@ -26,6 +27,7 @@ void GraphBuilderParameters::loadFromConfigFile(const mrpt::config::CConfigFileB
     MRPT_LOAD_CONFIG_VAR(wall_gap_close_radius_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(min_island_size_m, double, c, s);
     MRPT_LOAD_CONFIG_VAR(unknown_fill_radius_m, double, c, s);
+    MRPT_LOAD_CONFIG_VAR(enclosed_unknown_min_free_share, double, c, s);
     MRPT_LOAD_CONFIG_VAR(unknown_is_obstacle, bool, c, s);
     MRPT_LOAD_CONFIG_VAR(skeleton_on_free_cells_only, bool, c, s);
     MRPT_LOAD_CONFIG_VAR(min_clearance_m, double, c, s);
@@ -54,6 +56,9 @@ void GraphBuilderParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
         "[m] free-standing obstacles narrower than this (enclosing circle) become free; 0 = off");
     MRPT_SAVE_CONFIG_VAR_COMMENT(unknown_fill_radius_m,
                                  "[m] fill unknown specks in free space up to ~2x this; 0 = off");
+    MRPT_SAVE_CONFIG_VAR_COMMENT(
+        enclosed_unknown_min_free_share,
+        "[ratio] enclosed unknown regions whose border is this share free become free; 0 = off");
     MRPT_SAVE_CONFIG_VAR_COMMENT(unknown_is_obstacle,
                                  "[bool] unknown cells next to free space bound it like walls");
     MRPT_SAVE_CONFIG_VAR_COMMENT(skeleton_on_free_cells_only,
@@ -99,6 +104,10 @@ void GraphBuilderParameters::validate() const
               min_island_size_m, "min_island_size_m >= 0");
     requireGB(finite(unknown_fill_radius_m) && unknown_fill_radius_m >= 0.0,
               "unknown_fill_radius_m", unknown_fill_radius_m, "unknown_fill_radius_m >= 0");
+    requireGB(finite(enclosed_unknown_min_free_share) && enclosed_unknown_min_free_share >= 0.0 &&
+                  enclosed_unknown_min_free_share <= 1.0,
+              "enclosed_unknown_min_free_share", enclosed_unknown_min_free_share,
+              "0 <= enclosed_unknown_min_free_share <= 1");
     requireGB(finite(min_clearance_m) && min_clearance_m > 0.0, "min_clearance_m", min_clearance_m,
               "min_clearance_m > 0");
     requireGB(wall_gap_close_radius_m < min_clearance_m, "wall_gap_close_radius_m",
@@ -189,6 +198,86 @@ void closeObstacleGaps(std::vector<std::uint8_t>& cls, int sx, int sy, double ra
     cv::morphologyEx(occ, closed, cv::MORPH_CLOSE, disc, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT,
                      cv::Scalar(0));
     c.setTo(kOccupied, closed);
+}
+
+// Enclosed unknown regions: 8-connected components of unknown cells that do not reach the
+// grid's edge through unknown cells, and whose outer neighbours (4-neighbours outside the
+// component) are at least `min_free_share` free cells, become free. Such a region is free space
+// the laser crossed too sparsely to mark (the middle of a large hall, the wedge behind a
+// column); an unexplored room seen through a door is bounded mostly by its walls and stays,
+// and so does the unknown inside a thick wall. Returns how many regions were filled.
+std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
+                                double min_free_share)
+{
+    if (min_free_share <= 0.0 || cls.empty()) return 0;
+    constexpr std::uint8_t kOutside = 3, kSeen = 4;
+    const std::size_t n = cls.size();
+    std::deque<std::uint32_t> queue;  // breadth first: a frontier, not the whole region
+    // Visits the unknown component of `start`, marking it `mark`; appends its cells to `cells`
+    // when asked (not for the outside, which can be most of the grid).
+    auto flood = [&](std::size_t start, std::uint8_t mark, std::vector<std::uint32_t>* cells)
+    {
+        queue.assign(1, static_cast<std::uint32_t>(start));
+        cls[start] = mark;
+        while (!queue.empty())
+        {
+            const std::uint32_t i = queue.front();
+            queue.pop_front();
+            if (cells) cells->push_back(i);
+            const int x = static_cast<int>(i % sx), y = static_cast<int>(i / sx);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                {
+                    const int xx = x + dx, yy = y + dy;
+                    if ((dx == 0 && dy == 0) || xx < 0 || yy < 0 || xx >= sx || yy >= sy) continue;
+                    const std::size_t j = static_cast<std::size_t>(yy) * sx + xx;
+                    if (cls[j] != kUnknown) continue;
+                    cls[j] = mark;
+                    queue.push_back(static_cast<std::uint32_t>(j));
+                }
+        }
+    };
+    for (int x = 0; x < sx; ++x)
+        for (const int y : {0, sy - 1})
+        {
+            const std::size_t i = static_cast<std::size_t>(y) * sx + x;
+            if (cls[i] == kUnknown) flood(i, kOutside, nullptr);
+        }
+    for (int y = 0; y < sy; ++y)
+        for (const int x : {0, sx - 1})
+        {
+            const std::size_t i = static_cast<std::size_t>(y) * sx + x;
+            if (cls[i] == kUnknown) flood(i, kOutside, nullptr);
+        }
+    std::size_t filled = 0;
+    std::vector<std::uint32_t> cells;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        if (cls[i] != kUnknown) continue;
+        cells.clear();
+        flood(i, kSeen, &cells);
+        std::size_t free_border = 0, occupied_border = 0;
+        for (const std::uint32_t c : cells)
+        {
+            const int x = static_cast<int>(c % sx), y = static_cast<int>(c / sx);
+            const std::size_t nb[4] = {c - 1, c + 1, c - static_cast<std::size_t>(sx),
+                                       c + static_cast<std::size_t>(sx)};
+            const bool inside[4] = {x > 0, x<sx - 1, y> 0, y < sy - 1};
+            for (int k = 0; k < 4; ++k)
+                if (inside[k])
+                {
+                    free_border += cls[nb[k]] == kFree;
+                    occupied_border += cls[nb[k]] == kOccupied;
+                }
+        }
+        const std::size_t border = free_border + occupied_border;
+        if (border == 0 || static_cast<double>(free_border) < min_free_share * border) continue;
+        for (const std::uint32_t c : cells) cls[c] = kFree;
+        ++filled;
+    }
+    for (auto& c : cls)
+        if (c == kOutside || c == kSeen) c = kUnknown;
+    return filled;
 }
 
 // Islands: 8-connected components of non-free cells (occupied or unknown) surrounded by free
@@ -295,6 +384,8 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
     // Order matters: gaps are closed first, so that a wall cut into short pieces by one-cell
     // gaps is whole again before small free-standing pieces are judged as islands.
     closeObstacleGaps(cls, sx, sy, params.wall_gap_close_radius_m / res);
+    stats.unknown_regions_filled =
+        fillEnclosedUnknown(cls, sx, sy, params.enclosed_unknown_min_free_share);
     stats.islands_removed = removeSmallIslands(cls, sx, sy, params.min_island_size_m / res);
     fillUnknownSpecks(cls, sx, sy, params.unknown_fill_radius_m / res);
     for (auto c : cls)

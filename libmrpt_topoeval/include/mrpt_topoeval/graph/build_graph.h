@@ -36,6 +36,12 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
      * otherwise put small loops and dead ends into a room that the same room without them does
      * not have. Columns narrower than this go too, in every map alike. 0 disables [m]. */
     double min_island_size_m = 0.25;
+    /** Unknown regions enclosed by the map (8-connected unknown cells that do not reach the
+     * grid's edge through unknown cells) become free when at least this share of their border
+     * cells is free: the middle of a large hall that the laser crossed too sparsely to mark, the
+     * wedges behind columns. Regions bounded mostly by walls (an unexplored room seen through a
+     * door, the inside of a thick wall) stay unknown. 0 disables [ratio]. */
+    double enclosed_unknown_min_free_share = 0.9;
     /** Unknown cells next to free space bound it like obstacles: the graph is the skeleton of
      * the known free space, so half-seen areas (laser fans through doors, frontiers) do not
      * grow branches that change with every pass of the robot [bool]. */
@@ -90,12 +96,13 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
 /** What happened while building, for summaries and benchmarks. */
 struct GraphBuildStats
 {
-    std::size_t islands_removed = 0;     //!< Free-standing obstacles below min_island_size_m.
-    std::size_t sites = 0;               //!< Obstacle cells used as Voronoi sites.
-    std::size_t voronoi_vertices = 0;    //!< Voronoi vertices inside the grid (after merging).
-    std::size_t voronoi_edges = 0;       //!< Voronoi edges inside the grid.
-    std::size_t voronoi_edges_kept = 0;  //!< ... with enough clearance.
-    std::size_t vertices_initial = 0;    //!< Topology Graph before pruning.
+    std::size_t islands_removed = 0;         //!< Free-standing obstacles below min_island_size_m.
+    std::size_t unknown_regions_filled = 0;  //!< Enclosed unknown regions made free.
+    std::size_t sites = 0;                   //!< Obstacle cells used as Voronoi sites.
+    std::size_t voronoi_vertices = 0;        //!< Voronoi vertices inside the grid (after merging).
+    std::size_t voronoi_edges = 0;           //!< Voronoi edges inside the grid.
+    std::size_t voronoi_edges_kept = 0;      //!< ... with enough clearance.
+    std::size_t vertices_initial = 0;        //!< Topology Graph before pruning.
     std::size_t vertices_after_prune = 0;
     std::size_t vertices_after_alpha = 0;
     std::size_t vertices_after_component = 0;
