@@ -213,9 +213,8 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
     constexpr std::uint8_t kOutside = 3, kSeen = 4;
     const std::size_t n = cls.size();
     std::deque<std::uint32_t> queue;  // breadth first: a frontier, not the whole region
-    // Visits the unknown component of `start`, marking it `mark`; appends its cells to `cells`
-    // when asked (not for the outside, which can be most of the grid).
-    auto flood = [&](std::size_t start, std::uint8_t mark, std::vector<std::uint32_t>* cells)
+    // Visits the unknown component of `start`, marking it `mark`, and appends its cells.
+    auto flood = [&](std::size_t start, std::uint8_t mark, std::vector<std::uint32_t>& cells)
     {
         queue.assign(1, static_cast<std::uint32_t>(start));
         cls[start] = mark;
@@ -223,7 +222,7 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
         {
             const std::uint32_t i = queue.front();
             queue.pop_front();
-            if (cells) cells->push_back(i);
+            cells.push_back(i);
             const int x = static_cast<int>(i % sx), y = static_cast<int>(i / sx);
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx)
@@ -237,46 +236,44 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
                 }
         }
     };
-    for (int x = 0; x < sx; ++x)
-        for (const int y : {0, sy - 1})
-        {
-            const std::size_t i = static_cast<std::size_t>(y) * sx + x;
-            if (cls[i] == kUnknown) flood(i, kOutside, nullptr);
-        }
-    for (int y = 0; y < sy; ++y)
-        for (const int x : {0, sx - 1})
-        {
-            const std::size_t i = static_cast<std::size_t>(y) * sx + x;
-            if (cls[i] == kUnknown) flood(i, kOutside, nullptr);
-        }
+    // The outside (often most of the grid) by OpenCV's scan-line flood fill, 8-connected.
+    cv::Mat grid(sy, sx, CV_8UC1, cls.data());
+    auto outside = [&](int x, int y)
+    {
+        if (grid.at<std::uint8_t>(y, x) == kUnknown)
+            cv::floodFill(grid, cv::Point(x, y), cv::Scalar(kOutside), nullptr, cv::Scalar(0),
+                          cv::Scalar(0), 8);
+    };
+    for (int x = 0; x < sx; ++x) outside(x, 0), outside(x, sy - 1);
+    for (int y = 0; y < sy; ++y) outside(0, y), outside(sx - 1, y);
     std::size_t filled = 0;
     std::vector<std::uint32_t> cells;
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t start = 0; start < n; ++start)
     {
-        if (cls[i] != kUnknown) continue;
+        if (cls[start] != kUnknown) continue;
         cells.clear();
-        flood(i, kSeen, &cells);
+        flood(start, kSeen, cells);
         std::size_t free_border = 0, occupied_border = 0;
-        for (const std::uint32_t c : cells)
+        auto count = [&](std::size_t j)
         {
-            const int x = static_cast<int>(c % sx), y = static_cast<int>(c / sx);
-            const std::size_t nb[4] = {c - 1, c + 1, c - static_cast<std::size_t>(sx),
-                                       c + static_cast<std::size_t>(sx)};
-            const bool inside[4] = {x > 0, x<sx - 1, y> 0, y < sy - 1};
-            for (int k = 0; k < 4; ++k)
-                if (inside[k])
-                {
-                    free_border += cls[nb[k]] == kFree;
-                    occupied_border += cls[nb[k]] == kOccupied;
-                }
+            free_border += cls[j] == kFree;
+            occupied_border += cls[j] == kOccupied;
+        };
+        for (const std::uint32_t i : cells)
+        {
+            const int x = static_cast<int>(i % sx), y = static_cast<int>(i / sx);
+            if (x > 0) count(i - 1);
+            if (x + 1 < sx) count(i + 1);
+            if (y > 0) count(i - static_cast<std::size_t>(sx));
+            if (y + 1 < sy) count(i + static_cast<std::size_t>(sx));
         }
         const std::size_t border = free_border + occupied_border;
         if (border == 0 || static_cast<double>(free_border) < min_free_share * border) continue;
-        for (const std::uint32_t c : cells) cls[c] = kFree;
+        for (const std::uint32_t i : cells) cls[i] = kFree;
         ++filled;
     }
-    for (auto& c : cls)
-        if (c == kOutside || c == kSeen) c = kUnknown;
+    for (auto& v : cls)
+        if (v == kOutside || v == kSeen) v = kUnknown;
     return filled;
 }
 
