@@ -21,6 +21,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -226,11 +227,12 @@ Field<P> keyRow(const char* key, T P::*m, const std::string& unit, const char* h
                                         const std::string& s)
     { c.write(s, key, p.*m, savePadding(true), savePadding(false), text); };
     f.value_text = [m](const P& p, NumberText) { return streamText(p.*m); };
-    if (range)
-    {
-        f.valid = [m, r = *range](const P& p) { return r.contains(static_cast<double>(p.*m)); };
-        f.rule = [key, r = *range](const P&) { return r.rule(key); };
-    }
+    if constexpr (std::is_arithmetic_v<T>)
+        if (range)
+        {
+            f.valid = [m, r = *range](const P& p) { return r.contains(static_cast<double>(p.*m)); };
+            f.rule = [key, r = *range](const P&) { return r.rule(key); };
+        }
     return f;
 }
 
