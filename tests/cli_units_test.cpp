@@ -1,7 +1,8 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
-// The app logic behind `topoeval rawlog` and `series`, in-process: report.json, score rows and
-// scores.csv, and which files of a folder are maps.
+// The app logic behind `topoeval rawlog`, `series` and `rank`, in-process: report.json, score
+// rows and scores.csv, which files of a folder are maps, and rank's worker pool and ranks.
 #include <gtest/gtest.h>
+#include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/scores/scores.h>
 
@@ -11,7 +12,9 @@
 #include <iterator>
 #include <limits>
 
+#include "rank_maps.h"
 #include "rawlog_report.h"
+#include "test_paths.h"
 
 using namespace mrpt_topoeval;
 
@@ -112,4 +115,52 @@ TEST(MapFiles, EveryVerbKnowsAMapByTheSameNames)
     EXPECT_EQ(mapFormatFromName("x/house.GRIDMAP.gz"), MapFormat::Gridmap);
     EXPECT_EQ(mapFormatFromName("house.jpeg"), MapFormat::Image);
     EXPECT_FALSE(mapFormatFromName("house.tif").has_value());
+}
+
+// ---------------------------------------------------------------- rank
+
+TEST(Rank, EqualValuesShareTheirPositionsAndInvalidMapsHaveNone)
+{
+    using cli::ranks;
+    EXPECT_EQ(ranks({0.5, 0.9, 0.1}, {true, true, true}),
+              (std::vector<std::string>{"2", "1", "3"}));
+    // Equal to 3 decimals: one shared position written as a range, the next rank after it.
+    EXPECT_EQ(ranks({0.9001, 0.9004, 0.2, 0.7}, {true, true, true, false}),
+              (std::vector<std::string>{"1-2", "1-2", "3", ""}));
+}
+
+// The pool scores every map in the order given whatever the thread count; a missing map is an
+// error in its row and the others are still ranked.
+TEST(Rank, ScoresMapsInTheOrderGivenWhateverTheThreads)
+{
+    const std::string maps = mrpt_topoeval::testing::shareDir() + "/maps/";
+    const std::string gt_file = maps + "map_2333d24.yaml";
+    if (!std::filesystem::exists(gt_file)) GTEST_SKIP() << gt_file << " is not there";
+    const std::vector<std::string> files = {maps + "map_2333d24.yaml", maps + "missing.yaml",
+                                            maps + "map_6ccdcaa.yaml"};
+    Parameters params;
+    const LoadedMap gt = loadMap(gt_file, params.map_load);
+    const TopologyGraph gt_graph = buildTopologyGraph(gt.grid, params.graph);
+
+    std::string csv[2];
+    for (const int threads : {1, 3})
+    {
+        params.similarity.threads = threads;
+        std::size_t workers = 0;
+        const std::vector<cli::MapResult> results =
+            cli::scoreMaps(gt_graph, gt.grid, files, params, false, &workers);
+        EXPECT_EQ(workers, static_cast<std::size_t>(threads));
+        ASSERT_EQ(results.size(), files.size());
+        for (std::size_t i = 0; i < files.size(); ++i) EXPECT_EQ(results[i].file, files[i]);
+        EXPECT_TRUE(results[0].ok && results[2].ok);
+        EXPECT_FALSE(results[1].ok);
+        EXPECT_FALSE(results[1].internal_error);
+        EXPECT_NE(results[1].error.find("missing.yaml"), std::string::npos) << results[1].error;
+        EXPECT_DOUBLE_EQ(results[0].report.coverage, 1.0) << "the ground truth against itself";
+
+        const cli::Ranking rk = cli::rankMaps(results);
+        EXPECT_EQ(rk.overall, (std::vector<std::string>{"1", "", "2"}));
+        csv[threads == 1 ? 0 : 1] = cli::rankCsv(results, rk);
+    }
+    EXPECT_EQ(csv[0], csv[1]);
 }

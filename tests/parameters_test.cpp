@@ -7,10 +7,12 @@
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/errors.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.h"
 #include "test_paths.h"
@@ -287,4 +289,156 @@ TEST(Parameters, ValidateMessages)
         EXPECT_EQ(std::string(e.what()),
                   "[GraphBuilder] min_clearance_m = 0 violates min_clearance_m > 0");
     }
+}
+
+namespace
+{
+/** One key of the default INI: its section, name, value text and unit ("[m]" -> "m"). */
+struct IniKey
+{
+    std::string section, key, value, unit;
+};
+
+std::string trimmed(const std::string& s)
+{
+    const auto b = s.find_first_not_of(" \t");
+    if (b == std::string::npos) return {};
+    return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
+/** Every key saveToConfigFile() writes, read from its text (so a key added to any table is
+ * covered without a change here). */
+std::vector<IniKey> keysOf(const Parameters& p)
+{
+    mrpt::config::CConfigFileMemory mem;
+    p.saveToConfigFile(mem);
+    std::istringstream in(mem.getContent());
+    std::vector<IniKey> out;
+    std::string line, section;
+    while (std::getline(in, line))
+    {
+        line = trimmed(line);
+        if (line.empty()) continue;
+        if (line.front() == '[')
+        {
+            section = line.substr(1, line.find(']') - 1);
+            continue;
+        }
+        const auto eq = line.find('='), comment = line.find("//");
+        IniKey k{section, trimmed(line.substr(0, eq)),
+                 trimmed(line.substr(eq + 1, comment - eq - 1)), ""};
+        const auto lb = line.find('[', comment), rb = line.find(']', comment);
+        if (lb != std::string::npos && rb != std::string::npos)
+            k.unit = line.substr(lb + 1, rb - lb - 1);
+        out.push_back(k);
+    }
+    return out;
+}
+
+/** Another valid-looking value for `k`: the other boolean, the next whole number, a real
+ * 0.125 larger, the next word of a "[a|b|c]" unit. */
+std::string changedValue(const IniKey& k)
+{
+    if (k.value == "true") return "false";
+    if (k.value == "false") return "true";
+    if (k.unit.find('|') != std::string::npos)
+    {
+        std::vector<std::string> words;
+        std::istringstream in(k.unit);
+        for (std::string w; std::getline(in, w, '|');) words.push_back(w);
+        for (std::size_t i = 0; i < words.size(); ++i)
+            if (words[i] == k.value) return words[(i + 1) % words.size()];
+        ADD_FAILURE() << k.key << ": value '" << k.value << "' not among " << k.unit;
+        return k.value;
+    }
+    if (k.value.find_first_of(".eE") == std::string::npos)
+        return std::to_string(std::stoll(k.value) + 1);
+    std::ostringstream os;
+    os << std::stod(k.value) + 0.125;
+    return os.str();
+}
+
+bool sameValue(const std::string& a, const std::string& b)
+{
+    if (a == b) return true;
+    try
+    {
+        return std::abs(std::stod(a) - std::stod(b)) < 1e-9;
+    }
+    catch (const std::exception&)
+    {
+        return false;
+    }
+}
+}  // namespace
+
+// Each key's load and save touch one member: a changed value read from the INI is written back
+// unchanged, and every other key keeps its default.
+TEST(Parameters, EveryKeyRoundTripsAlone)
+{
+    const std::vector<IniKey> defaults = keysOf(Parameters());
+    ASSERT_GE(defaults.size(), 80u);
+    for (const IniKey& k : defaults)
+    {
+        const std::string value = changedValue(k);
+        Parameters p;
+        p.loadFromConfigFile(mrpt::config::CConfigFileMemory("[" + k.section + "]\n" + k.key +
+                                                             " = " + value + "\n"));
+        const std::vector<IniKey> after = keysOf(p);
+        ASSERT_EQ(after.size(), defaults.size());
+        for (std::size_t i = 0; i < after.size(); ++i)
+        {
+            const bool is_k = after[i].section == k.section && after[i].key == k.key;
+            EXPECT_TRUE(sameValue(after[i].value, is_k ? value : defaults[i].value))
+                << "after loading [" << k.section << "] " << k.key << " = " << value << ": ["
+                << after[i].section << "] " << after[i].key << " = " << after[i].value;
+        }
+    }
+}
+
+// Every numeric key has a lower bound, and its message names the section, key and value.
+TEST(Parameters, EveryNumericKeyNamesSectionKeyAndValueWhenOutOfRange)
+{
+    for (const IniKey& k : keysOf(Parameters()))
+    {
+        if (k.value == "true" || k.value == "false" || k.unit.find('|') != std::string::npos)
+            continue;
+        const std::string msg = iniError("[" + k.section + "]\n" + k.key + " = -1000\n");
+        EXPECT_TRUE(contains(msg, "[" + k.section + "] " + k.key + " = -1000 violates "))
+            << k.key << ": " << msg;
+    }
+}
+
+// A stage's own validate() names its section too (library users call it without Parameters).
+TEST(Parameters, StageValidateNamesItsSection)
+{
+    const auto message = [](const auto& part) -> std::string
+    {
+        try
+        {
+            part.validate();
+        }
+        catch (const InputError& e)
+        {
+            return e.what();
+        }
+        return "";
+    };
+    mrpt_topoeval::GraphMatcherParameters matcher;
+    matcher.max_groups = 0;
+    EXPECT_EQ(message(matcher), "[GraphMatcher] max_groups = 0 violates max_groups >= 1");
+    mrpt_topoeval::VertexSimilarityParameters similarity;
+    similarity.threads = -1;
+    EXPECT_EQ(message(similarity), "[VertexSimilarity] threads = -1 violates 0 <= threads <= 256");
+    mrpt_topoeval::QualityParameters quality;
+    quality.brokenness_min_part_vertices = 9;
+    EXPECT_EQ(message(quality),
+              "[QualityEvaluator] brokenness_min_part_vertices = 9 violates 2 <= "
+              "brokenness_min_part_vertices <= brokenness_min_vertices");
+    mrpt_topoeval::MapLoadOptions map_load;
+    map_load.grey_between_thresholds = "grey";
+    EXPECT_EQ(message(map_load),
+              "[MapLoad] grey_between_thresholds = 'grey' violates grey_between_thresholds in "
+              "{auto, unknown, probability}");
+    EXPECT_EQ(message(mrpt_topoeval::GraphBuilderParameters()), "");
 }

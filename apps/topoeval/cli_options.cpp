@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <tuple>
 
 namespace fs = std::filesystem;
 
@@ -254,6 +255,18 @@ Parameters StandardOptions::parameters() const
 void StandardOptions::checkOutputPaths(const std::vector<std::string>& inputs) const
 {
     for (const auto& out : outputs()) checkOutputPath(out.second, force(), inputs);
+}
+
+GtAndMapRun StandardOptions::gtAndMapRun(const std::string& too_many_hint) const
+{
+    GtAndMapRun run;
+    std::tie(run.gt_path, run.map_path) = gtAndMap(too_many_hint);
+    checkJsonImage();
+    checkDistinctOutputs(m_cl, outputs());
+    run.params = parameters();
+    // Refuse unwritable outputs now rather than after the work.
+    checkOutputPaths({run.gt_path, run.map_path, config()});
+    return run;
 }
 
 }  // namespace mrpt_topoeval::cli

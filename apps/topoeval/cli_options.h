@@ -60,6 +60,13 @@ void checkDistinctOutputs(const VerbCommandLine& cl, const OutputList& outputs);
 
 // ---- The standard options
 
+/** What `compare` and `match` start from, every check done before any work. */
+struct GtAndMapRun
+{
+    std::string gt_path, map_path;
+    Parameters params;
+};
+
 /** The options most verbs share, each declared by its add*() call on the verb's command line
  * (TCLAP lists the last added first, so the verb calls them in reverse order of its usage
  * line, between its own options), read after VerbCommandLine::parse(). */
@@ -109,6 +116,11 @@ public:
     /** checkOutputPath() on each of outputs() before any work. \throws UsageError,
      * OutputError */
     void checkOutputPaths(const std::vector<std::string>& inputs) const;
+
+    /** The start `compare` and `match` share, in this order: gtAndMap(), checkJsonImage(), the
+     * outputs distinct, parameters(), and checkOutputPaths() against both maps and --config.
+     * \throws UsageError, InputError, OutputError */
+    GtAndMapRun gtAndMapRun(const std::string& too_many_hint = "") const;
 
     /** Writes `json_text` to --json, `picture` to --image and `html_text` to --html, those
      * given, in that order; returns the files written. \throws OutputError */

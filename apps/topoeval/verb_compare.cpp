@@ -81,15 +81,10 @@ int verbCompare(int argc, char** argv)
     opts.addGtAndMap();
     if (const auto done = cl.parse(argc, argv)) return *done;
 
-    const auto [gt_path, map_path] = opts.gtAndMap("; to score several maps use 'topoeval rank'");
+    const auto [gt_path, map_path, params] =
+        opts.gtAndMapRun("; to score several maps use 'topoeval rank'");
     const std::string json_path = opts.json();
     const std::string image_path = opts.image();
-    opts.checkJsonImage();
-    checkDistinctOutputs(cl, opts.outputs());
-    const Parameters params = opts.parameters();
-
-    // Refuse unwritable outputs now rather than after the work.
-    opts.checkOutputPaths({gt_path, map_path, opts.config()});
 
     std::map<std::string, double> timing_ms;
     const LoadedMap gt = loadMapTimed(gt_path, params.map_load, timing_ms["load_ground_truth"]);

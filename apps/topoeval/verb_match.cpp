@@ -127,15 +127,9 @@ int verbMatch(int argc, char** argv)
     opts.addGtAndMap();
     if (const auto done = cl.parse(argc, argv)) return *done;
 
-    const auto [gt_path, map_path] = opts.gtAndMap();
+    const auto [gt_path, map_path, params] = opts.gtAndMapRun();
     const std::string json_path = opts.json();
     const std::string image_path = opts.image();
-    opts.checkJsonImage();
-    checkDistinctOutputs(cl, opts.outputs());
-    const Parameters params = opts.parameters();
-
-    // Refuse unwritable outputs now rather than after the work.
-    opts.checkOutputPaths({gt_path, map_path, opts.config()});
 
     std::map<std::string, double> timing_ms;
     const Side gt = loadSide(gt_path, "ground_truth", params, timing_ms);

@@ -14,17 +14,19 @@
 #include <sstream>
 #include <vector>
 
+#include "common/parameter_table.h"
+
 namespace fs = std::filesystem;
 
 namespace mrpt_topoeval
 {
 namespace
 {
-const char* const kMapLoadSection = "MapLoad";
-const char* const kGraphBuilderSection = "GraphBuilder";
-const char* const kSimilaritySection = "VertexSimilarity";
-const char* const kMatcherSection = "GraphMatcher";
-const char* const kQualitySection = "QualityEvaluator";
+using internal::isBool;
+using internal::isInteger;
+using internal::lower;
+using internal::parseReal;
+using internal::trim;
 
 // A configuration file is a few kilobytes; anything much larger is the wrong file.
 constexpr std::uintmax_t kMaxIniBytes = 1 << 20;
@@ -40,65 +42,17 @@ const char* const kIniHeader =
 
 // One comment line above each section header of the default INI.
 const std::map<std::string, std::string> kSectionComments = {
-    {kMapLoadSection,
+    {MapLoadOptions::kIniSection,
      "# How map files are read (the command line's --resolution overrides resolution_m)."},
-    {kGraphBuilderSection,
+    {GraphBuilderParameters::kIniSection,
      "# Building the Topology Graph from the grid (paper section II-B and II-C)."},
-    {kSimilaritySection,
+    {VertexSimilarityParameters::kIniSection,
      "# Similarity of two vertices, from attributes or by ICP (paper section III-A)."},
-    {kMatcherSection,
+    {GraphMatcherParameters::kIniSection,
      "# Matching two graphs: consistent groups (default) or the paper's isomorphisms (III-B)."},
-    {kQualitySection,
+    {QualityParameters::kIniSection,
      "# Map attributes and scores from the match (paper section IV; doc/quality.md)."},
 };
-
-std::string trim(const std::string& s)
-{
-    const auto b = s.find_first_not_of(" \t\r\n");
-    if (b == std::string::npos) return {};
-    const auto e = s.find_last_not_of(" \t\r\n");
-    return s.substr(b, e - b + 1);
-}
-
-std::string lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return s;
-}
-
-/** Shortest text that reads back as `v` ("-1", "0.05"), for messages. */
-std::string num(double v)
-{
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof(buf), v);
-    return std::string(buf, r.ptr);
-}
-
-/** Strict number: the whole text, finite (MRPT's reader would take "0.3x" as 0.3 and "" as 0). */
-bool parseReal(const std::string& text, double& out)
-{
-    const std::string t = trim(text);
-    if (t.empty()) return false;
-    char* end = nullptr;
-    out = std::strtod(t.c_str(), &end);
-    return end == t.c_str() + t.size() && std::isfinite(out);
-}
-
-bool isInteger(const std::string& text)
-{
-    std::string t = trim(text);
-    if (!t.empty() && (t[0] == '-' || t[0] == '+')) t.erase(0, 1);
-    return !t.empty() &&
-           std::all_of(t.begin(), t.end(), [](unsigned char ch) { return std::isdigit(ch) != 0; });
-}
-
-/** The spellings MRPT's read_bool() understands the way a user means them. */
-bool isBool(const std::string& text)
-{
-    const std::string t = lower(trim(text));
-    return t == "true" || t == "false" || t == "yes" || t == "no" || t == "1" || t == "0";
-}
 
 std::size_t editDistance(const std::string& a, const std::string& b)
 {
@@ -134,35 +88,6 @@ std::string suggestion(const std::string& given, const std::vector<std::string>&
     }
     if (best_name.empty() || best > std::max<std::size_t>(2, given.size() / 3)) return {};
     return " (did you mean '" + best_name + "'?)";
-}
-
-// ---- [MapLoad] values, read strictly: this section is ours and the reader must not turn
-// "0.05m" into 0.05 or "" into 0.
-
-double readRealStrict(const mrpt::config::CConfigFileBase& c, const std::string& s,
-                      const std::string& key, double def)
-{
-    if (!c.keyExists(s, key)) return def;
-    const std::string text = trim(c.read_string(s, key, ""));
-    double v = 0.0;
-    if (!parseReal(text, v))
-        throw InputError("[" + s + "] " + key + " = '" + text + "' is not a finite number");
-    return v;
-}
-
-std::uint64_t readCountStrict(const mrpt::config::CConfigFileBase& c, const std::string& s,
-                              const std::string& key, std::uint64_t def)
-{
-    if (!c.keyExists(s, key)) return def;
-    const std::string text = trim(c.read_string(s, key, ""));
-    if (!text.empty() && text[0] == '-' && isInteger(text))
-        throw InputError("[" + s + "] " + key + " = " + text + " violates " + key + " > 0");
-    std::uint64_t v = 0;
-    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size())
-        throw InputError("[" + s + "] " + key + " = '" + text +
-                         "' is not a whole number (up to 2^64-1)");
-    return v;
 }
 
 // ---- Structure of an INI file, checked before MRPT reads it: MRPT's reader ignores lines
@@ -313,98 +238,38 @@ void checkValues(const std::string& file, const mrpt::config::CConfigFileBase& c
         }
 }
 
-/** Prefixes "[Section] " to a stage's own validation message unless it names one already. */
-std::string inSection(const std::string& section, const std::string& msg)
-{
-    if (!msg.empty() && msg[0] == '[') return msg;
-    return "[" + section + "] " + msg;
-}
-
 std::string firstLine(const std::string& s) { return s.substr(0, s.find('\n')); }
 }  // namespace
 
 // `s` prefixes every section name (empty: [MapLoad], [GraphBuilder]), so several complete
-// configurations can share one file.
+// configurations can share one file. Each part's keys are listed once, in its table
+// (common/parameter_table.h).
 void Parameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
 {
-    const std::string ml = s + kMapLoadSection;
-    map_load.resolution_m = readRealStrict(c, ml, "resolution_m", map_load.resolution_m);
-    map_load.occupied_thresh = readRealStrict(c, ml, "occupied_thresh", map_load.occupied_thresh);
-    map_load.free_thresh = readRealStrict(c, ml, "free_thresh", map_load.free_thresh);
-    map_load.max_cells = readCountStrict(c, ml, "max_cells", map_load.max_cells);
-    if (c.keyExists(ml, "grey_between_thresholds"))
-        map_load.grey_between_thresholds = trim(c.read_string(ml, "grey_between_thresholds", ""));
-
-    graph.loadFromConfigFile(c, s + kGraphBuilderSection);
-    similarity.loadFromConfigFile(c, s + kSimilaritySection);
-    matcher.loadFromConfigFile(c, s + kMatcherSection);
-    quality.loadFromConfigFile(c, s + kQualitySection);
+    map_load.loadFromConfigFile(c, s + map_load.kIniSection);
+    graph.loadFromConfigFile(c, s + graph.kIniSection);
+    similarity.loadFromConfigFile(c, s + similarity.kIniSection);
+    matcher.loadFromConfigFile(c, s + matcher.kIniSection);
+    quality.loadFromConfigFile(c, s + quality.kIniSection);
 }
 
 void Parameters::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
-    // MRPT_SAVE_CONFIG_VAR_COMMENT would name the keys "map_load.resolution_m": write them
-    // with the same padding under their plain names.
-    const std::string ml = s + kMapLoadSection;
-    const int np = mrpt::config::MRPT_SAVE_NAME_PADDING();
-    const int vp = mrpt::config::MRPT_SAVE_VALUE_PADDING();
-    c.write(ml, "resolution_m", map_load.resolution_m, np, vp,
-            "[m/cell] cell size of plain images and of rendered .simplemap files");
-    c.write(ml, "occupied_thresh", map_load.occupied_thresh, np, vp,
-            "[probability] plain images: a pixel is occupied if (255-grey)/255 > this");
-    c.write(ml, "free_thresh", map_load.free_thresh, np, vp,
-            "[probability] plain images: a pixel is free if (255-grey)/255 < this");
-    c.write(ml, "grey_between_thresholds", map_load.grey_between_thresholds, np, vp,
-            "[auto|unknown|probability] images without a ROS mode: pixels between the "
-            "thresholds are unknown, or keep their probability (auto: when >4 such greys)");
-    c.write(ml, "max_cells", map_load.max_cells, np, vp,
-            "[cells] largest map accepted (width x height), checked before decoding");
-
-    graph.saveToConfigFile(c, s + kGraphBuilderSection);
-    similarity.saveToConfigFile(c, s + kSimilaritySection);
-    matcher.saveToConfigFile(c, s + kMatcherSection);
-    quality.saveToConfigFile(c, s + kQualitySection);
+    map_load.saveToConfigFile(c, s + map_load.kIniSection);
+    graph.saveToConfigFile(c, s + graph.kIniSection);
+    similarity.saveToConfigFile(c, s + similarity.kIniSection);
+    matcher.saveToConfigFile(c, s + matcher.kIniSection);
+    quality.saveToConfigFile(c, s + quality.kIniSection);
 }
 
+// Every part's message names its section: "[GraphBuilder] min_clearance_m = -1 violates ...".
 void Parameters::validate() const
 {
-    const std::string sec = std::string("[") + kMapLoadSection + "] ";
-    const MapLoadOptions& m = map_load;
-    if (!(std::isfinite(m.resolution_m) && m.resolution_m > 0.0))
-        throw InputError(sec + "resolution_m = " + num(m.resolution_m) +
-                         " violates resolution_m > 0");
-    if (!(m.occupied_thresh >= 0.0 && m.occupied_thresh <= 1.0))
-        throw InputError(sec + "occupied_thresh = " + num(m.occupied_thresh) +
-                         " violates 0 <= occupied_thresh <= 1");
-    if (!(m.free_thresh >= 0.0 && m.free_thresh <= 1.0))
-        throw InputError(sec + "free_thresh = " + num(m.free_thresh) +
-                         " violates 0 <= free_thresh <= 1");
-    // Equal thresholds would leave no unknown band, larger free would make cells both.
-    if (!(m.free_thresh < m.occupied_thresh))
-        throw InputError(sec + "free_thresh = " + num(m.free_thresh) +
-                         " violates free_thresh < occupied_thresh (" + num(m.occupied_thresh) +
-                         ")");
-    if (m.max_cells == 0) throw InputError(sec + "max_cells = 0 violates max_cells > 0");
-    if (m.grey_between_thresholds != "auto" && m.grey_between_thresholds != "unknown" &&
-        m.grey_between_thresholds != "probability")
-        throw InputError(sec + "grey_between_thresholds = '" + m.grey_between_thresholds +
-                         "' violates grey_between_thresholds in {auto, unknown, probability}");
-
-    auto validateSection = [](const char* section, auto& part)
-    {
-        try
-        {
-            part.validate();
-        }
-        catch (const InputError& e)
-        {
-            throw InputError(inSection(section, e.what()));
-        }
-    };
-    validateSection(kGraphBuilderSection, graph);
-    validateSection(kSimilaritySection, similarity);
-    validateSection(kMatcherSection, matcher);
-    validateSection(kQualitySection, quality);
+    map_load.validate();
+    graph.validate();
+    similarity.validate();
+    matcher.validate();
+    quality.validate();
 }
 
 Parameters Parameters::fromIniFile(const std::string& path)

@@ -1,7 +1,6 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 // Paper IV: map attributes from a match of two Topology Graphs, and the scores built on them.
 
-#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/graph/build_graph.h>
@@ -14,113 +13,11 @@
 #include <queue>
 #include <sstream>
 
-#include "common/validation.h"
 #include "geometry/horn.h"
 #include "graph/MatchView.h"
 
 namespace mrpt_topoeval
 {
-// ---------------------------------------------------------------- parameters
-void QualityParameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                           const std::string& s)
-{
-    MRPT_LOAD_CONFIG_VAR(consistency_short_max_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(consistency_medium_max_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(brokenness_max_squared_error_m2, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(brokenness_min_vertices, int, c, s);
-    MRPT_LOAD_CONFIG_VAR(brokenness_min_part_vertices, int, c, s);
-    MRPT_LOAD_CONFIG_VAR(brokenness_part_min_gap_m2, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(vertex_slack_share, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(outlier_distance_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(accuracy_scale_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(consistency_scale_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(weight_coverage, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(weight_relative_accuracy, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(weight_consistency, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(weight_brokenness, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(min_trusted_coverage, double, c, s);
-}
-
-void QualityParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                         const std::string& s) const
-{
-    MRPT_SAVE_CONFIG_VAR_COMMENT(consistency_short_max_m,
-                                 "[m] local consistency: short pairs have graph distance < this");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(consistency_medium_max_m, "[m] ... medium < this <= long");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_max_squared_error_m2,
-                                 "[m^2] a brokenness group's largest mean squared error");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_min_vertices,
-                                 "[1] smallest brokenness group counted (paper: 5)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_min_part_vertices,
-                                 "[1] a smaller group counts when clearly separate (paper: = min)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(brokenness_part_min_gap_m2,
-                                 "[m^2] ... placed this far (mean sq.) from every counted group");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        vertex_slack_share,
-        "[ratio] pair error up to this share of the vertices' clearance is jitter (0 = paper)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        outlier_distance_m,
-        "[m] a pair's error counts at most this much in accuracy and consistency (0 = paper)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(accuracy_scale_m, "[m] accuracy score = 1 / (1 + rmse / this)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(consistency_scale_m,
-                                 "[m] consistency score = 1 / (1 + mean error / this)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(weight_coverage, "[1] weight of coverage in quality");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(weight_relative_accuracy,
-                                 "[1] weight of the relative accuracy score in quality");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(weight_consistency,
-                                 "[1] weight of the mean local consistency score in quality");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(weight_brokenness,
-                                 "[1] weight of the brokenness score in quality");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        min_trusted_coverage,
-        "[ratio] below this coverage quality x sqrt(coverage / this) (0 = paper)");
-}
-
-void QualityParameters::validate() const
-{
-    internal::require(internal::isPositive(consistency_short_max_m), "consistency_short_max_m",
-                      consistency_short_max_m, "consistency_short_max_m > 0");
-    internal::require(std::isfinite(consistency_medium_max_m) &&
-                          consistency_medium_max_m > consistency_short_max_m,
-                      "consistency_medium_max_m", consistency_medium_max_m,
-                      "consistency_medium_max_m > consistency_short_max_m");
-    internal::require(internal::isPositive(brokenness_max_squared_error_m2),
-                      "brokenness_max_squared_error_m2", brokenness_max_squared_error_m2,
-                      "brokenness_max_squared_error_m2 > 0");
-    internal::require(brokenness_min_vertices >= 2, "brokenness_min_vertices",
-                      brokenness_min_vertices, "brokenness_min_vertices >= 2");
-    internal::require(brokenness_min_part_vertices >= 2 &&
-                          brokenness_min_part_vertices <= brokenness_min_vertices,
-                      "brokenness_min_part_vertices", brokenness_min_part_vertices,
-                      "2 <= brokenness_min_part_vertices <= brokenness_min_vertices");
-    internal::require(internal::isPositive(brokenness_part_min_gap_m2),
-                      "brokenness_part_min_gap_m2", brokenness_part_min_gap_m2,
-                      "brokenness_part_min_gap_m2 > 0");
-    internal::require(
-        std::isfinite(vertex_slack_share) && vertex_slack_share >= 0.0 && vertex_slack_share <= 1.0,
-        "vertex_slack_share", vertex_slack_share, "0 <= vertex_slack_share <= 1");
-    internal::require(internal::isNonNegative(outlier_distance_m), "outlier_distance_m",
-                      outlier_distance_m, "outlier_distance_m >= 0");
-    internal::require(internal::isPositive(accuracy_scale_m), "accuracy_scale_m", accuracy_scale_m,
-                      "accuracy_scale_m > 0");
-    internal::require(internal::isPositive(consistency_scale_m), "consistency_scale_m",
-                      consistency_scale_m, "consistency_scale_m > 0");
-    internal::require(internal::isNonNegative(weight_coverage), "weight_coverage", weight_coverage,
-                      "weight_coverage >= 0");
-    internal::require(internal::isNonNegative(weight_relative_accuracy), "weight_relative_accuracy",
-                      weight_relative_accuracy, "weight_relative_accuracy >= 0");
-    internal::require(internal::isNonNegative(weight_consistency), "weight_consistency",
-                      weight_consistency, "weight_consistency >= 0");
-    internal::require(internal::isNonNegative(weight_brokenness), "weight_brokenness",
-                      weight_brokenness, "weight_brokenness >= 0");
-    internal::require(internal::isNonNegative(min_trusted_coverage) && min_trusted_coverage <= 1.0,
-                      "min_trusted_coverage", min_trusted_coverage,
-                      "0 <= min_trusted_coverage <= 1");
-    internal::require(
-        weight_coverage + weight_relative_accuracy + weight_consistency + weight_brokenness > 0.0,
-        "weight_coverage", weight_coverage, "at least one weight > 0");
-}
-
 // ---------------------------------------------------------------- attributes
 namespace
 {

@@ -1,5 +1,4 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
-#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/graph/build_graph.h>
 
@@ -10,7 +9,6 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "common/validation.h"
 #include "graph/GraphEditor.h"
 #include "graph/attributes.h"
 #include "skeleton/outer_boundary.h"
@@ -18,123 +16,6 @@
 
 namespace mrpt_topoeval
 {
-// ---------------------------------------------------------------- parameters
-void GraphBuilderParameters::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                                const std::string& s)
-{
-    MRPT_LOAD_CONFIG_VAR(occupied_min_prob, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(free_max_prob, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(wall_gap_close_radius_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(min_island_size_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(unknown_fill_radius_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(enclosed_unknown_min_free_share, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(unknown_is_obstacle, bool, c, s);
-    MRPT_LOAD_CONFIG_VAR(skeleton_on_free_cells_only, bool, c, s);
-    MRPT_LOAD_CONFIG_VAR(min_clearance_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(prune_dead_end_length_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(corner_spur_ratio, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(junction_disc_ratio, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(junction_disc_max_length_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(spurious_dead_end_length_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(alpha_radius_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(min_component_length_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(join_distance_m, double, c, s);
-    MRPT_LOAD_CONFIG_VAR(edge_direction_distance_m, double, c, s);
-}
-
-void GraphBuilderParameters::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                              const std::string& s) const
-{
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        occupied_min_prob, "[probability] a cell is an obstacle (Voronoi site) if P(occ) >= this");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(free_max_prob, "[probability] a cell is free if P(occ) <= this");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        wall_gap_close_radius_m,
-        "[m] close gaps in walls up to ~2x this (< min_clearance_m); 0 = off");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        min_island_size_m,
-        "[m] free-standing obstacles narrower than this (enclosing circle) become free; 0 = off");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(unknown_fill_radius_m,
-                                 "[m] fill unknown specks in free space up to ~2x this; 0 = off");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        enclosed_unknown_min_free_share,
-        "[ratio] enclosed unknown regions whose border is this share free become free; 0 = off");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(unknown_is_obstacle,
-                                 "[bool] unknown cells next to free space bound it like walls");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(skeleton_on_free_cells_only,
-                                 "[bool] keep only skeleton points on free cells");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        min_clearance_m, "[m] drop Voronoi edges nearer than this to an obstacle (paper: 0.3)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(prune_dead_end_length_m,
-                                 "[m] remove dead-end edges shorter than this");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        corner_spur_ratio,
-        "[ratio] remove dead ends shorter than this x their clearance drop (corner branches)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        junction_disc_ratio,
-        "[ratio] remove dead ends ending within this x their junction's clearance of it");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(junction_disc_max_length_m,
-                                 "[m] ... only for dead ends shorter than this (straight)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(spurious_dead_end_length_m,
-                                 "[m] mark remaining dead ends shorter than this as spurious");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        alpha_radius_m, "[m] alpha-shape radius of the outer boundary (paper: 2.5); 0 = no cut");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        min_component_length_m,
-        "[m] keep every connected part with at least this much edge length (and the longest)");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(join_distance_m,
-                                 "[m] merge vertices joined by an edge shorter than this");
-    MRPT_SAVE_CONFIG_VAR_COMMENT(
-        edge_direction_distance_m,
-        "[m] an edge's direction at a vertex is measured up to this far along it");
-}
-
-void GraphBuilderParameters::validate() const
-{
-    auto requireGB = [](bool ok, const char* name, double value, const char* rule)
-    { internal::require(ok, name, value, rule, "[GraphBuilder] "); };
-    auto finite = [](double v) { return std::isfinite(v); };
-    requireGB(finite(occupied_min_prob) && occupied_min_prob > 0.5 && occupied_min_prob <= 1.0,
-              "occupied_min_prob", occupied_min_prob, "0.5 < occupied_min_prob <= 1");
-    requireGB(finite(free_max_prob) && free_max_prob >= 0.0 && free_max_prob < 0.5, "free_max_prob",
-              free_max_prob, "0 <= free_max_prob < 0.5");
-    requireGB(finite(wall_gap_close_radius_m) && wall_gap_close_radius_m >= 0.0,
-              "wall_gap_close_radius_m", wall_gap_close_radius_m, "wall_gap_close_radius_m >= 0");
-    requireGB(finite(min_island_size_m) && min_island_size_m >= 0.0, "min_island_size_m",
-              min_island_size_m, "min_island_size_m >= 0");
-    requireGB(finite(unknown_fill_radius_m) && unknown_fill_radius_m >= 0.0,
-              "unknown_fill_radius_m", unknown_fill_radius_m, "unknown_fill_radius_m >= 0");
-    requireGB(finite(enclosed_unknown_min_free_share) && enclosed_unknown_min_free_share >= 0.0 &&
-                  enclosed_unknown_min_free_share <= 1.0,
-              "enclosed_unknown_min_free_share", enclosed_unknown_min_free_share,
-              "0 <= enclosed_unknown_min_free_share <= 1");
-    requireGB(finite(min_clearance_m) && min_clearance_m > 0.0, "min_clearance_m", min_clearance_m,
-              "min_clearance_m > 0");
-    requireGB(wall_gap_close_radius_m < min_clearance_m, "wall_gap_close_radius_m",
-              wall_gap_close_radius_m, "wall_gap_close_radius_m < min_clearance_m");
-    requireGB(finite(prune_dead_end_length_m) && prune_dead_end_length_m >= 0.0,
-              "prune_dead_end_length_m", prune_dead_end_length_m, "prune_dead_end_length_m >= 0");
-    requireGB(finite(corner_spur_ratio) && corner_spur_ratio >= 0.0, "corner_spur_ratio",
-              corner_spur_ratio, "corner_spur_ratio >= 0");
-    requireGB(finite(junction_disc_ratio) && junction_disc_ratio >= 0.0, "junction_disc_ratio",
-              junction_disc_ratio, "junction_disc_ratio >= 0");
-    requireGB(finite(junction_disc_max_length_m) && junction_disc_max_length_m >= 0.0,
-              "junction_disc_max_length_m", junction_disc_max_length_m,
-              "junction_disc_max_length_m >= 0");
-    requireGB(finite(spurious_dead_end_length_m) && spurious_dead_end_length_m >= 0.0,
-              "spurious_dead_end_length_m", spurious_dead_end_length_m,
-              "spurious_dead_end_length_m >= 0");
-    requireGB(finite(alpha_radius_m) && alpha_radius_m >= 0.0, "alpha_radius_m", alpha_radius_m,
-              "alpha_radius_m >= 0");
-    requireGB(!std::isnan(min_component_length_m) && min_component_length_m >= 0.0,
-              "min_component_length_m", min_component_length_m, "min_component_length_m >= 0");
-    requireGB(finite(join_distance_m) && join_distance_m >= 0.0, "join_distance_m", join_distance_m,
-              "join_distance_m >= 0");
-    requireGB(finite(edge_direction_distance_m) && edge_direction_distance_m > 0.0,
-              "edge_direction_distance_m", edge_direction_distance_m,
-              "edge_direction_distance_m > 0");
-}
-
 // ---------------------------------------------------------------- construction
 namespace
 {

@@ -13,6 +13,9 @@ namespace mrpt_topoeval
 /** Parameters of the map attributes and scores (paper IV), INI section `[QualityEvaluator]`. */
 struct QualityParameters : public mrpt::config::CLoadableOptions
 {
+    /** The INI section of these keys, named by validate() in its messages. */
+    static constexpr const char* kIniSection = "QualityEvaluator";
+
     /** Local consistency classes by shortest graph distance: short < this [m] ... */
     double consistency_short_max_m = 3.0;
     /** ... medium < this <= long [m]. */
@@ -55,7 +58,8 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
     void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-    /** \throws InputError naming the field and value. */
+    /** \throws InputError naming the section, field and value, e.g.
+     * "[QualityEvaluator] accuracy_scale_m = 0 violates accuracy_scale_m > 0". */
     void validate() const;
 };
 

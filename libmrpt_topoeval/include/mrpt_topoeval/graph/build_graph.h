@@ -16,6 +16,9 @@ namespace mrpt_topoeval
  * Lengths in metres, so one configuration fits maps of any resolution. */
 struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
 {
+    /** The INI section of these keys, named by validate() in its messages. */
+    static constexpr const char* kIniSection = "GraphBuilder";
+
     /** A cell is an obstacle (a Voronoi site) when P(occupied) >= this [probability]. */
     double occupied_min_prob = 0.65;
     /** A cell is free space when P(occupied) <= this [probability]. */
@@ -88,8 +91,8 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
     void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-    /** \throws InputError naming the field and value, e.g.
-     * "min_clearance_m = -1 violates min_clearance_m > 0". */
+    /** \throws InputError naming the section, field and value, e.g.
+     * "[GraphBuilder] min_clearance_m = -1 violates min_clearance_m > 0". */
     void validate() const;
 };
 

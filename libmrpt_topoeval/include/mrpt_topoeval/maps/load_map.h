@@ -1,6 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #pragma once
 
+#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
 #include <cstdint>
@@ -9,9 +10,13 @@
 
 namespace mrpt_topoeval
 {
-/** How to read map files whose format does not carry everything (plain images). */
-struct MapLoadOptions
+/** How to read map files whose format does not carry everything (plain images), INI section
+ * `[MapLoad]` (the command line's --resolution overrides resolution_m). */
+struct MapLoadOptions : public mrpt::config::CLoadableOptions
 {
+    /** The INI section of these keys, named by validate() in its messages. */
+    static constexpr const char* kIniSection = "MapLoad";
+
     /** Cell size for plain images and for rendering `.simplemap` files [m/cell]. */
     double resolution_m = 0.05;
     /** Plain images only: a pixel is occupied when (255 - grey)/255 > this (ROS default). */
@@ -29,6 +34,12 @@ struct MapLoadOptions
     /** Largest map accepted, in cells (width x height). Image headers are checked against it
      * before any pixel is decoded. Default 10^8 cells (10000 x 10000). */
     std::uint64_t max_cells = 100'000'000ULL;
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+    /** \throws InputError naming the section, field and value, e.g.
+     * "[MapLoad] resolution_m = -1 violates resolution_m > 0". */
+    void validate() const;
 };
 
 /** A grid map and where it came from. */

@@ -31,6 +31,9 @@ MatchMethod matchMethodFromString(const std::string& s);
  * compares only distances between vertices of one map with those of the other. */
 struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
 {
+    /** The INI section of these keys, named by validate() in its messages. */
+    static constexpr const char* kIniSection = "GraphMatcher";
+
     MatchMethod method = MatchMethod::Consistent;
 
     // --- method = paper
@@ -130,7 +133,8 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
     void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-    /** \throws InputError naming the field and value. */
+    /** \throws InputError naming the section, field and value, e.g.
+     * "[GraphMatcher] max_groups = 0 violates max_groups >= 1". */
     void validate() const;
 };
 

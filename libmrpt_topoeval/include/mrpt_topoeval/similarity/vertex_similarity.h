@@ -28,6 +28,9 @@ SimilarityMode similarityModeFromString(const std::string& s);
  * ramp: 1 when the two values agree, falling linearly to 0 at its tolerance. */
 struct VertexSimilarityParameters : public mrpt::config::CLoadableOptions
 {
+    /** The INI section of these keys, named by validate() in its messages. */
+    static constexpr const char* kIniSection = "VertexSimilarity";
+
     SimilarityMode mode = SimilarityMode::Attributes;
 
     // --- attributes (paper III-A, first approach)
@@ -70,7 +73,8 @@ struct VertexSimilarityParameters : public mrpt::config::CLoadableOptions
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
     void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-    /** \throws InputError naming the field and value. */
+    /** \throws InputError naming the section, field and value, e.g.
+     * "[VertexSimilarity] threads = -1 violates 0 <= threads <= 256". */
     void validate() const;
 };
 

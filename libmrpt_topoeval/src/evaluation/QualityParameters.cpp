@@ -1,0 +1,66 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+// [QualityEvaluator]: every key once (common/parameter_table.h); units and reasons in
+// evaluate_match.h.
+
+#include <mrpt_topoeval/evaluation/evaluate_match.h>
+
+#include <cmath>
+
+#include "common/parameter_table.h"
+
+namespace mrpt_topoeval
+{
+TOPOEVAL_PARAMETER_TABLE(
+    QualityParameters, NumberText::Stream,
+    real(TOPOEVAL_KEY(consistency_short_max_m), "m",
+         "local consistency: short pairs have graph distance < this", above(0)),
+    real(TOPOEVAL_KEY(consistency_medium_max_m), "m", "... medium < this <= long"),
+    relation(&P::consistency_medium_max_m, "consistency_medium_max_m > consistency_short_max_m",
+             [](const P& p)
+             {
+                 return std::isfinite(p.consistency_medium_max_m) &&
+                        p.consistency_medium_max_m > p.consistency_short_max_m;
+             }),
+    real(TOPOEVAL_KEY(brokenness_max_squared_error_m2), "m^2",
+         "a brokenness group's largest mean squared error", above(0)),
+    integer(TOPOEVAL_KEY(brokenness_min_vertices), "1",
+            "smallest brokenness group counted (paper: 5)", atLeast(2)),
+    integer(TOPOEVAL_KEY(brokenness_min_part_vertices), "1",
+            "a smaller group counts when clearly separate (paper: = min)"),
+    relation(&P::brokenness_min_part_vertices,
+             "2 <= brokenness_min_part_vertices <= brokenness_min_vertices",
+             [](const P& p)
+             {
+                 return p.brokenness_min_part_vertices >= 2 &&
+                        p.brokenness_min_part_vertices <= p.brokenness_min_vertices;
+             }),
+    real(TOPOEVAL_KEY(brokenness_part_min_gap_m2), "m^2",
+         "... placed this far (mean sq.) from every counted group", above(0)),
+    real(TOPOEVAL_KEY(vertex_slack_share), "ratio",
+         "pair error up to this share of the vertices' clearance is jitter (0 = paper)",
+         atLeast(0).atMost(1)),
+    real(TOPOEVAL_KEY(outlier_distance_m), "m",
+         "a pair's error counts at most this much in accuracy and consistency (0 = paper)",
+         atLeast(0)),
+    real(TOPOEVAL_KEY(accuracy_scale_m), "m", "accuracy score = 1 / (1 + rmse / this)", above(0)),
+    real(TOPOEVAL_KEY(consistency_scale_m), "m", "consistency score = 1 / (1 + mean error / this)",
+         above(0)),
+    real(TOPOEVAL_KEY(weight_coverage), "1", "weight of coverage in quality", atLeast(0)),
+    real(TOPOEVAL_KEY(weight_relative_accuracy), "1",
+         "weight of the relative accuracy score in quality", atLeast(0)),
+    real(TOPOEVAL_KEY(weight_consistency), "1",
+         "weight of the mean local consistency score in quality", atLeast(0)),
+    real(TOPOEVAL_KEY(weight_brokenness), "1", "weight of the brokenness score in quality",
+         atLeast(0)),
+    real(TOPOEVAL_KEY(min_trusted_coverage), "ratio",
+         "below this coverage quality x sqrt(coverage / this) (0 = paper)", atLeast(0).atMost(1)),
+    // All weights 0 would leave the weighted mean undefined.
+    relation(&P::weight_coverage, "at least one weight > 0",
+             [](const P& p)
+             {
+                 return p.weight_coverage + p.weight_relative_accuracy + p.weight_consistency +
+                            p.weight_brokenness >
+                        0.0;
+             }))
+
+}  // namespace mrpt_topoeval
