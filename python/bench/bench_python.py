@@ -1,0 +1,93 @@
+"""The figures of doc/python.md: the overhead of a Python compare() over the C++ evaluate() it
+wraps, and batch throughput (maps/s) on 1 and 2 Dask workers against `topoeval rank` with the
+same thread count.
+
+    PYTHONPATH=build/python /usr/bin/python3 python/bench/bench_python.py \
+        --topoeval build/apps/topoeval/topoeval [--maps 100] [--repeat 5]
+"""
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import mrpt_topoeval as te
+from mrpt_topoeval import batch
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+MAPS = os.path.join(ROOT, "share", "mrpt_topoeval", "maps")
+GT = os.path.join(MAPS, "house_gt_trinary_res0.05.yaml")
+SAMPLES = [os.path.join(MAPS, "map_6ccdcaa.yaml"), os.path.join(MAPS, "map_2333d24.yaml")]
+
+
+def overhead(repeat):
+    """compare() wall time against the library's own evaluate() time inside the same call."""
+    gt = te.load_map(GT)
+    print("compare overhead: Python wall time of te.compare(gt, map) with loaded maps, against "
+          "the C++ evaluate() time of the same call (report['timing_ms']['evaluate'])")
+    for path in SAMPLES:
+        m = te.load_map(path)
+        te.compare(gt, m)  # warm-up
+        walls, cpps = [], []
+        for _ in range(repeat):
+            t0 = time.perf_counter()
+            r = te.compare(gt, m)
+            walls.append((time.perf_counter() - t0) * 1000.0)
+            cpps.append(r["timing_ms"]["evaluate"])
+        w, c = statistics.median(walls), statistics.median(cpps)
+        print(f"  {os.path.basename(path)}: Python {w:.1f} ms, C++ evaluate {c:.1f} ms, "
+              f"overhead {100.0 * (w - c) / c:.2f} % (median of {repeat})")
+
+
+def make_maps(folder, n):
+    os.makedirs(folder, exist_ok=True)
+    maps = []
+    for i in range(n):
+        src = SAMPLES[i % 2]
+        text = open(src).read()
+        image = text.split("image:")[1].split("\n")[0].strip()
+        dst = os.path.join(folder, f"m{i:04d}.yaml")
+        with open(dst, "w") as f:
+            f.write(text.replace(image, os.path.join(MAPS, image), 1))
+        maps.append(dst)
+    return maps
+
+
+def throughput(topoeval, n, tmp):
+    maps = make_maps(os.path.join(tmp, "maps"), n)
+    print(f"throughput on {n} maps (the two robot samples alternately) against {GT}:")
+    for threads in (1, 2):
+        t0 = time.perf_counter()
+        subprocess.run([topoeval, "rank", GT, *maps, "--threads", str(threads)], check=True,
+                       stdout=subprocess.DEVNULL)
+        s = time.perf_counter() - t0
+        print(f"  topoeval rank --threads {threads}: {s:.1f} s, {n / s:.2f} maps/s")
+        jobs = batch.folder_jobs(GT, os.path.join(tmp, "maps"))
+        out = os.path.join(tmp, f"out{threads}")
+        t0 = time.perf_counter()
+        rows = batch.run_batch(jobs, out, workers=threads, progress=False)
+        s = time.perf_counter() - t0
+        assert len(rows) == n and all(r["status"] == "ok" for r in rows)
+        print(f"  topoeval-batch, LocalCluster of {threads} worker(s): {s:.1f} s "
+              f"(cluster start included), {n / s:.2f} maps/s")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--topoeval", required=True)
+    ap.add_argument("--maps", type=int, default=100)
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--skip-throughput", action="store_true")
+    a = ap.parse_args()
+    print(f"machine: {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f} at start; "
+          f"{sys.executable}")
+    overhead(a.repeat)
+    if not a.skip_throughput:
+        with tempfile.TemporaryDirectory(prefix="topoeval_bench_") as tmp:
+            throughput(a.topoeval, a.maps, tmp)
+
+
+if __name__ == "__main__":
+    main()
