@@ -258,7 +258,10 @@ class _Progress:
 def _connect(scheduler, workers, host):
     from distributed import Client, LocalCluster
     if scheduler:
-        return Client(scheduler), None
+        try:
+            return Client(scheduler, timeout="30s"), None
+        except (OSError, TimeoutError) as e:
+            raise BatchError(f"cannot reach the Dask scheduler at {scheduler}: {e}") from e
     # One single-threaded process per worker, as `topoeval rank --threads N` runs N maps.
     cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
                            processes=True, host=host, dashboard_address=None)
