@@ -234,6 +234,7 @@ class Report(dict):
     - ``gt_graph``, ``map_graph``: both :class:`Graph` objects;
     - ``scores``: the ranked figures at full precision (the JSON rounds to 6 decimals);
     - ``json_text``: the exact JSON the command writes (timing_ms aside);
+    - ``cpp_ms``: the time this call spent in the C++ library, evaluation and JSON [ms];
     - ``quality``, ``coverage``: shorthands for the dict's entries.
     """
 
@@ -242,6 +243,7 @@ class Report(dict):
         self.json_text = comparison.json
         self._c = comparison
         self.scores = dict(comparison.scores)
+        self.cpp_ms = comparison.cpp_ms
 
     # Built on first use: a compare() in a loop that reads only the scores pays for none of it.
     @functools.cached_property

@@ -8,8 +8,9 @@ worker; the ground truth's graph is built once per worker process and reused, as
 
 Results go to ``OUT/results.csv`` (the columns of ``topoeval rank --csv`` after ``gt, map,
 config, status, error``) and ``OUT/results.json`` (the same rows with each map's full report),
-rows in the order of the jobs, written atomically as results arrive, so a batch that is stopped
-keeps what it did. Running the same batch again skips the rows already there (status ``ok``
+rows in the order of the jobs, written atomically at the end, also when the batch is stopped;
+while it runs, each row is appended to ``OUT/results.journal`` as it arrives, so that even a
+killed client keeps what it did (the next run reads the journal). Running the same batch again skips the rows already there (status ``ok``
 and ``error``; ``--retry-errors`` scores the errors again). A map that fails is a row with
 status ``error`` and the command's message; a worker that dies mid-task has its task run again
 on another worker by the Dask scheduler; a task that still cannot finish (it killed several
@@ -32,6 +33,9 @@ __all__ = ["Job", "read_manifest", "folder_jobs", "score_job", "run_batch", "mai
            "CSV_COLUMNS"]
 
 CSV_COLUMNS = ["gt", "map", "config", "status", "error"] + te.RANK_CSV_COLUMNS[1:]
+# One JSON line per row as it arrives: what a stopped run did, without rewriting both result
+# files for every map (which, with thousands of rows, would cost more than the maps).
+JOURNAL = "results.journal"
 
 
 class Job(tuple):
@@ -89,7 +93,7 @@ def read_manifest(path, default_config=""):
 
 def folder_jobs(gt, folder, config=""):
     """Every map file of ``folder`` (by name, as ``topoeval series`` picks them), sorted, the
-    ground truth itself left out, against ``gt``."""
+    ground truth's own path left out, against ``gt``."""
     if not os.path.isdir(folder):
         raise BatchError(f"{folder}: no such folder")
     jobs = []
@@ -97,7 +101,8 @@ def folder_jobs(gt, folder, config=""):
         p = os.path.join(folder, name)
         if not os.path.isfile(p) or not te.is_map_file(p):
             continue
-        if os.path.exists(gt) and os.path.samefile(p, gt):
+        # The ground truth's own path only: a link or copy of it is a map like any other.
+        if os.path.abspath(p) == os.path.abspath(gt):
             continue
         jobs.append(Job(gt, p, config))
     if not jobs:
@@ -155,16 +160,30 @@ def _key(row):
     return (row["gt"], row["map"], row["config"] or "")
 
 
-def _load_previous(json_path):
+def _load_previous(out_dir):
+    """The rows of an earlier run: results.json, then the journal of a run that was stopped
+    before it could write it (later rows win)."""
+    json_path = os.path.join(out_dir, "results.json")
+    rows = {}
     try:
         with open(json_path, encoding="utf-8") as f:
-            data = json.load(f)
-        return {_key(r): r for r in data.get("rows", [])}
+            rows = {_key(r): r for r in json.load(f).get("rows", [])}
     except FileNotFoundError:
-        return {}
+        pass
     except (OSError, ValueError) as e:
         raise BatchError(f"{json_path}: cannot read the previous results ({e}); move it away "
                          "to start afresh") from e
+    try:
+        with open(os.path.join(out_dir, JOURNAL), encoding="utf-8") as f:
+            for line in f:
+                try:
+                    r = json.loads(line)
+                except ValueError:
+                    break  # the last line of a killed run may be cut
+                rows[_key(r)] = r
+    except FileNotFoundError:
+        pass
+    return rows
 
 
 def _ranked_rows(rows):
@@ -269,7 +288,7 @@ def _connect(scheduler, workers, host):
 
 
 def run_batch(jobs, out_dir, scheduler=None, workers=None, host="127.0.0.1",
-              retry_errors=False, progress=True, stream=sys.stderr, save_every_s=1.0):
+              retry_errors=False, progress=True, stream=sys.stderr):
     """Scores ``jobs`` on a Dask cluster and writes OUT_DIR/results.csv and results.json.
 
     ``scheduler``: the address of a running scheduler (``tcp://host:8786``); else a
@@ -277,38 +296,45 @@ def run_batch(jobs, out_dir, scheduler=None, workers=None, host="127.0.0.1",
     ``host`` (loopback unless asked otherwise). Returns the rows, in the order of ``jobs``."""
     jobs = list(dict.fromkeys(Job(*j) for j in jobs))  # each job once, first order kept
     os.makedirs(out_dir, exist_ok=True)
-    done = _load_previous(os.path.join(out_dir, "results.json"))
-    done = {k: r for k, r in done.items() if k in set(jobs)}
+    wanted = set(jobs)
+    done = {k: r for k, r in _load_previous(out_dir).items() if k in wanted}
     redo = ("failed", "error") if retry_errors else ("failed",)
     todo = [j for j in jobs if j not in done or done[j]["status"] in redo]
     bar = _Progress(len(todo), len(jobs) - len(todo), stream, progress)
     if progress and len(todo) < len(jobs):
         stream.write(f"topoeval-batch: {len(jobs) - len(todo)} of {len(jobs)} rows already "
                      f"done in {out_dir}, skipped\n")
-    if todo:
-        from distributed import as_completed
-        client, cluster = _connect(scheduler, workers, host)
-        try:
-            futures = {client.submit(score_job, *j, pure=False, key=f"topoeval-{i}"): j
-                       for i, j in enumerate(todo)}
-            last_save = time.monotonic()
-            for fut in as_completed(futures):
-                j = futures[fut]
-                try:
-                    row = fut.result()
-                except Exception as e:  # KilledWorker: the task brought down several workers
-                    row = {"gt": j.gt, "map": j.map, "config": j.config, "status": "failed",
-                           "error": f"{type(e).__name__}: {e}", "scores": None, "report": None}
-                done[j] = row
-                bar.update(row["status"])
-                if time.monotonic() - last_save >= save_every_s:
-                    _save(out_dir, jobs, done)
-                    last_save = time.monotonic()
-        finally:
-            client.close()
-            if cluster is not None:
-                cluster.close()
-    return _save(out_dir, jobs, done)
+    journal_path = os.path.join(out_dir, JOURNAL)
+    try:
+        if todo:
+            from distributed import as_completed
+            client, cluster = _connect(scheduler, workers, host)
+            try:
+                futures = {client.submit(score_job, *j, pure=False, key=f"topoeval-{i}"): j
+                           for i, j in enumerate(todo)}
+                with open(journal_path, "a", encoding="utf-8") as journal:
+                    for fut in as_completed(futures):
+                        j = futures[fut]
+                        try:
+                            row = fut.result()
+                        except Exception as e:  # KilledWorker: it brought down several workers
+                            row = {"gt": j.gt, "map": j.map, "config": j.config,
+                                   "status": "failed", "error": f"{type(e).__name__}: {e}",
+                                   "scores": None, "report": None}
+                        done[j] = row
+                        journal.write(json.dumps(row) + "\n")
+                        journal.flush()
+                        bar.update(row["status"])
+            finally:
+                client.close()
+                if cluster is not None:
+                    cluster.close()
+    finally:
+        # Also when stopped (Ctrl-C, a lost scheduler): the files hold every row done.
+        rows = _save(out_dir, jobs, done)
+    if os.path.exists(journal_path):
+        os.remove(journal_path)  # everything it held is in results.json now
+    return rows
 
 
 def main(argv=None):

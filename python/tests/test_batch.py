@@ -212,3 +212,24 @@ def test_manifest_errors_are_reported(tmp_path):
                         str(tmp_path / "o")], capture_output=True, text=True, timeout=60)
     assert r.returncode == 2
     assert "must name the columns gt and map" in r.stderr
+
+
+def test_a_killed_client_keeps_its_rows_in_the_journal(tmp_path):
+    maps = make_maps(str(tmp_path / "maps"), 2)
+    out = tmp_path / "out"
+    jobs = batch.folder_jobs(GT, str(tmp_path / "maps"))
+    batch.run_batch(jobs, str(out), workers=1, progress=False)
+    assert not (out / batch.JOURNAL).exists()
+    csv_text, json_text = (out / "results.csv").read_text(), (out / "results.json").read_text()
+    # What a client killed before writing the result files leaves: the journal only, its last
+    # line cut. The next run takes every whole row from it and scores only the cut one.
+    rows = json.loads(json_text)["rows"]
+    lines = [json.dumps(r) for r in rows]
+    (out / batch.JOURNAL).write_text("\n".join(lines[:-1]) + "\n" + lines[-1][:20])
+    (out / "results.csv").unlink()
+    (out / "results.json").unlink()
+    again = batch.run_batch(jobs, str(out), workers=1, progress=False)
+    assert [r["map"] for r in again] == sorted(maps)
+    assert (out / "results.csv").read_text() == csv_text
+    assert (out / "results.json").read_text() == json_text
+    assert not (out / batch.JOURNAL).exists()
