@@ -309,6 +309,7 @@ def run_batch(jobs, out_dir, scheduler=None, workers=None, host="127.0.0.1",
         if todo:
             from distributed import as_completed
             client, cluster = _connect(scheduler, workers, host)
+            bar.t0 = time.monotonic()  # maps per second of scoring, not of the cluster's start
             try:
                 futures = {client.submit(score_job, *j, pure=False, key=f"topoeval-{i}"): j
                            for i, j in enumerate(todo)}

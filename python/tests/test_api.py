@@ -45,8 +45,9 @@ def test_compare_with_config_file_and_dict_equals_cli(tmp_path):
     assert te.compare(MAP_B, MAP_A, te.Config.from_ini(ini)).without_timing() == cli
     d = {"GraphBuilder": {"min_clearance_m": 0.35}, "VertexSimilarity": {"mode": "attributes"}}
     assert te.compare(MAP_B, MAP_A, d).without_timing() == cli
-    assert te.Config(d).to_dict()["GraphBuilder"]["min_clearance_m"] == "0.35" or \
-        float(te.Config(d).to_dict()["GraphBuilder"]["min_clearance_m"]) == 0.35
+    assert float(te.Config(d).to_dict()["GraphBuilder"]["min_clearance_m"]) == 0.35
+    # to_dict() gives back a Config equal to the one it came from.
+    assert te.Config(te.Config(d).to_dict()).ini_text() == te.Config(d).ini_text()
 
 
 @pytest.mark.parametrize("text", [
