@@ -2,7 +2,7 @@
 #   cmake -DROOT=<source dir> -DCLANG_FORMAT=<clang-format> -P cmake/CheckFormat.cmake
 cmake_minimum_required(VERSION 3.16)
 set(globs)
-foreach(dir libmrpt_topoeval apps tests bench examples)
+foreach(dir libmrpt_topoeval apps tests bench examples python)
     list(APPEND globs "${ROOT}/${dir}/*.cpp" "${ROOT}/${dir}/*.h")
 endforeach()
 file(GLOB_RECURSE files ${globs})

@@ -119,16 +119,6 @@ TEST(MapFiles, EveryVerbKnowsAMapByTheSameNames)
 
 // ---------------------------------------------------------------- rank
 
-TEST(Rank, EqualValuesShareTheirPositionsAndInvalidMapsHaveNone)
-{
-    using cli::ranks;
-    EXPECT_EQ(ranks({0.5, 0.9, 0.1}, {true, true, true}),
-              (std::vector<std::string>{"2", "1", "3"}));
-    // Equal to 3 decimals: one shared position written as a range, the next rank after it.
-    EXPECT_EQ(ranks({0.9001, 0.9004, 0.2, 0.7}, {true, true, true, false}),
-              (std::vector<std::string>{"1-2", "1-2", "3", ""}));
-}
-
 // The pool scores every map in the order given whatever the thread count; a missing map is an
 // error in its row and the others are still ranked.
 TEST(Rank, ScoresMapsInTheOrderGivenWhateverTheThreads)

@@ -1287,3 +1287,57 @@ TEST(MapIoGridmap, LengthFieldsAreCheckedBeforeMrptAllocates)
 }
 
 }  // namespace
+
+// mapFromCells() (Python Map.from_array): cells land where an OccupancyGrid puts them (row 0
+// at the lowest y), both encodings classify as documented, bad arrays are refused by name.
+TEST(MapFromCells, CellsLandInOccupancyGridOrderWithTheirClasses)
+{
+    using mrpt_topoeval::CellEncoding;
+    using mrpt_topoeval::mapFromCells;
+    const mrpt_topoeval::MapLoadOptions opts;
+    // 3 columns x 2 rows; row 0 is y in [1, 1.1), the lower row.
+    const std::vector<double> probabilities = {0.0, 1.0, NAN, 0.3, 0.9, 0.5};
+    const auto m = mapFromCells(probabilities, 3, 2, 0.1, 1.0, 1.0,
+                                CellEncoding::OccupancyProbability, opts, "array");
+    EXPECT_EQ(m.format, "array");
+    EXPECT_EQ(m.grid.getSizeX(), 3u);
+    EXPECT_EQ(m.grid.getSizeY(), 2u);
+    EXPECT_NEAR(m.grid.getXMin(), 1.0, 1e-6);
+    EXPECT_NEAR(m.grid.getYMin(), 1.0, 1e-6);
+    EXPECT_NEAR(m.grid.getCell(0, 0), 1.0, 0.01);  // P(free) = 1 - P(occupied)
+    EXPECT_NEAR(m.grid.getCell(1, 0), 0.0, 0.01);
+    EXPECT_NEAR(m.grid.getCell(2, 0), 0.5, 0.01);  // NaN = unknown
+    EXPECT_NEAR(m.grid.getCell(0, 1), 0.7, 0.01);  // kept as a probability
+    EXPECT_NEAR(m.grid.getCell(1, 1), 0.1, 0.01);
+
+    // ROS values: -1 unknown, 0 free, 100 occupied, between classified by the thresholds.
+    const std::vector<double> ros = {0, 100, -1, 10, 70, 50};
+    const auto r =
+        mapFromCells(ros, 3, 2, 0.1, 0.0, 0.0, CellEncoding::RosOccupancyGrid, opts, "ros");
+    const std::vector<double> expected_free = {1.0, 0.0, 0.5, 1.0, 0.0, 0.5};
+    for (int i = 0; i < 6; ++i)
+        EXPECT_NEAR(r.grid.getCell(i % 3, i / 3), expected_free[i], 0.01) << "cell " << i;
+
+    const auto message = [&](const std::vector<double>& cells, std::size_t w, std::size_t h,
+                             CellEncoding enc, double res = 0.1)
+    {
+        try
+        {
+            mapFromCells(cells, w, h, res, 0.0, 0.0, enc, opts, "arr");
+        }
+        catch (const mrpt_topoeval::InputError& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(message({0.0, 1.5}, 2, 1, CellEncoding::OccupancyProbability),
+              "arr: cell (row 0, column 1) = 1.5 violates 0 <= occupancy probability <= 1 "
+              "(NaN = unknown)");
+    EXPECT_EQ(message({0.0, 101}, 2, 1, CellEncoding::RosOccupancyGrid),
+              "arr: cell (row 0, column 1) = 101 is not an OccupancyGrid value (-1 unknown, "
+              "0..100)");
+    EXPECT_EQ(message({}, 0, 1, CellEncoding::RosOccupancyGrid), "arr: a 1 x 0 array has no cells");
+    EXPECT_EQ(message({0.0}, 1, 1, CellEncoding::RosOccupancyGrid, -1),
+              "arr: resolution_m = -1 violates resolution_m > 0");
+}

@@ -191,3 +191,13 @@ TEST(Output, JsonQuoteEscapesAndKeepsUtf8Valid)
         << "a stray byte is U+FFFD";
     EXPECT_EQ(mrpt_topoeval::JsonWriter::quote(std::string("nul\0x", 5)), "\"nul\\u0000x\"");
 }
+
+// The one-line form of messages that the command prints and Python's exceptions carry.
+TEST(MessageOnOneLine, FoldsLineBreaksIntoSemicolons)
+{
+    using mrpt_topoeval::messageOnOneLine;
+    EXPECT_EQ(messageOnOneLine("a.yaml: bad"), "a.yaml: bad");
+    EXPECT_EQ(messageOnOneLine("first\nsecond\r\n\nthird\n"), "first; second; third");
+    EXPECT_EQ(messageOnOneLine("\n\nlead"), "lead");
+    EXPECT_EQ(messageOnOneLine(""), "");
+}

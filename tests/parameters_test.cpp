@@ -442,3 +442,39 @@ TEST(Parameters, StageValidateNamesItsSection)
               "{auto, unknown, probability}");
     EXPECT_EQ(message(mrpt_topoeval::GraphBuilderParameters()), "");
 }
+
+// fromIniText() (the Python Config.from_dict) gives fromIniFile()'s values and messages, with
+// its source's name where the path would be.
+TEST(Parameters, FromIniTextMatchesFromIniFile)
+{
+    const std::string good = "[GraphBuilder]\nmin_clearance_m = 0.4\n";
+    EXPECT_DOUBLE_EQ(Parameters::fromIniText(good, "dict").graph.min_clearance_m, 0.4);
+    for (const std::string bad :
+         {"[GraphBuilder]\nmin_clearance_m = -1\n", "[GraphBuilder]\nmin_clerance_m = 1\n",
+          "[NoSuchSection]\nx = 1\n"})
+    {
+        SCOPED_TRACE(bad);
+        const ScopedTempDir dir_tmp("params_text");
+        const std::string path = writeText(dir_tmp.path, "bad.ini", bad);
+        std::string from_file, from_text;
+        try
+        {
+            Parameters::fromIniFile(path);
+        }
+        catch (const InputError& e)
+        {
+            from_file = e.what();
+        }
+        try
+        {
+            Parameters::fromIniText(bad, "dict");
+        }
+        catch (const InputError& e)
+        {
+            from_text = e.what();
+        }
+        ASSERT_FALSE(from_file.empty());
+        ASSERT_EQ(from_text.rfind("dict: ", 0), 0u) << from_text;
+        EXPECT_EQ(from_text.substr(6), from_file.substr(path.size() + 2));
+    }
+}

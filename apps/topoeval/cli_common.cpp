@@ -17,26 +17,7 @@ namespace mrpt_topoeval::cli
 namespace
 {
 /** Messages promise one line: fold any line breaks a lower layer put in. */
-std::string oneLine(const std::string& msg)
-{
-    std::string out;
-    bool pending_break = false;
-    for (const char ch : msg)
-    {
-        if (ch == '\n' || ch == '\r')
-        {
-            pending_break = !out.empty();
-            continue;
-        }
-        if (pending_break)
-        {
-            out += "; ";
-            pending_break = false;
-        }
-        out.push_back(ch);
-    }
-    return out;
-}
+std::string oneLine(const std::string& msg) { return messageOnOneLine(msg); }
 }  // namespace
 
 void printError(const std::string& msg)

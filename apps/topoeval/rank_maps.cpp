@@ -7,6 +7,7 @@
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/maps/load_map.h>
 #include <mrpt_topoeval/pipeline/evaluate.h>
+#include <mrpt_topoeval/scores/ranking.h>
 
 #include <algorithm>
 #include <atomic>
@@ -67,36 +68,6 @@ void evaluateOne(const TopologyGraph& gt_graph, const mrpt::maps::COccupancyGrid
 
 }  // namespace
 
-std::vector<std::string> ranks(const std::vector<double>& values, const std::vector<bool>& valid,
-                               int decimals)
-{
-    const double scale = std::pow(10.0, decimals);
-    std::vector<std::int64_t> key(values.size(), 0);
-    std::vector<std::size_t> order;
-    for (std::size_t i = 0; i < values.size(); ++i)
-        if (valid[i])
-        {
-            // NaN never comes from the evaluator; should it, it ranks last.
-            key[i] = std::isfinite(values[i]) ? std::llround(values[i] * scale)
-                                              : std::numeric_limits<std::int64_t>::min();
-            order.push_back(i);
-        }
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return key[a] > key[b]; });
-    std::vector<std::string> out(values.size());
-    for (std::size_t first = 0; first < order.size();)
-    {
-        std::size_t last = first;
-        while (last + 1 < order.size() && key[order[last + 1]] == key[order[first]]) ++last;
-        const std::string r = first == last
-                                  ? std::to_string(first + 1)
-                                  : std::to_string(first + 1) + "-" + std::to_string(last + 1);
-        for (std::size_t k = first; k <= last; ++k) out[order[k]] = r;
-        first = last + 1;
-    }
-    return out;
-}
-
 namespace
 {
 /** `v` with `decimals` decimals, trailing zeros removed; "" if not finite. Locale
@@ -144,8 +115,9 @@ Ranking rankMaps(const std::vector<MapResult>& results)
         // has degree 0 but is not the least broken.
         brokenness[i] = m.report.brokenness.score;
     }
-    return {ranks(quality, valid), ranks(coverage, valid), ranks(accuracy, valid),
-            ranks(consistency, valid), ranks(brokenness, valid)};
+    return {rankPositions(quality, valid), rankPositions(coverage, valid),
+            rankPositions(accuracy, valid), rankPositions(consistency, valid),
+            rankPositions(brokenness, valid)};
 }
 
 namespace

@@ -42,12 +42,6 @@ std::vector<MapResult> scoreMaps(const TopologyGraph& gt_graph,
                                  const std::vector<std::string>& files, const Parameters& params,
                                  bool html, std::size_t* workers = nullptr);
 
-/** Ranks of `values` (higher is better) among the maps with `valid`: 1 is the best, maps
- * whose values agree to `decimals` decimals share their positions, written "2-3" as in the
- * paper's Table I. Invalid maps get "". */
-std::vector<std::string> ranks(const std::vector<double>& values, const std::vector<bool>& valid,
-                               int decimals = 3);
-
 /** All ranks of the maps, in the order given. */
 struct Ranking
 {

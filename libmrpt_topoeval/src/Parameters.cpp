@@ -290,16 +290,21 @@ Parameters Parameters::fromIniFile(const std::string& path)
     if (!f) throw InputError(path + ": cannot open for reading");
     std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
     if (f.bad()) throw InputError(path + ": read error");
+    return fromIniText(text, path);
+}
+
+Parameters Parameters::fromIniText(std::string text, const std::string& source)
+{
     if (text.find('\0') != std::string::npos)
-        throw InputError(path + ": not a text file (contains NUL bytes)");
+        throw InputError(source + ": not a text file (contains NUL bytes)");
     if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // BOM left by some editors
 
     Parameters p;
     const Schema schema = schemaOf(p, "");
-    checkStructure(path, text, schema);
+    checkStructure(source, text, schema);
 
     const mrpt::config::CConfigFileMemory cfg(text);
-    checkValues(path, cfg, schema);
+    checkValues(source, cfg, schema);
     try
     {
         p.loadFromConfigFile(cfg, "");
@@ -307,11 +312,11 @@ Parameters Parameters::fromIniFile(const std::string& path)
     }
     catch (const InputError& e)
     {
-        throw InputError(path + ": " + e.what());
+        throw InputError(source + ": " + e.what());
     }
     catch (const std::exception& e)
     {
-        throw InputError(path + ": " + firstLine(e.what()));
+        throw InputError(source + ": " + firstLine(e.what()));
     }
     return p;
 }

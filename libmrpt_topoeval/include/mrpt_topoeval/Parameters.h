@@ -32,6 +32,10 @@ struct Parameters : public mrpt::config::CLoadableOptions
      * are errors naming the file, section, key and value.
      * \throws InputError */
     static Parameters fromIniFile(const std::string& path);
+    /** fromIniFile() on INI text held in memory (the Python `Config.from_dict`): the same
+     * checks and messages, with `source` where the file's path would be.
+     * \throws InputError */
+    static Parameters fromIniText(std::string text, const std::string& source);
     /** The documented default configuration as INI text (what `topoeval config --write`
      * writes), every key with its unit and meaning. */
     static std::string defaultIniText();

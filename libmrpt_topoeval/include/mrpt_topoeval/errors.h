@@ -23,4 +23,9 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/** `msg` on one line as the `topoeval` command prints errors and warnings: each run of line
+ * breaks becomes "; " (none at either end). The Python package gives its exceptions the same
+ * text, so that a message reads the same in both. */
+std::string messageOnOneLine(const std::string& msg);
+
 }  // namespace mrpt_topoeval

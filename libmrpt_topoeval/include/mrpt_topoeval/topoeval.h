@@ -37,6 +37,7 @@
 #include <mrpt_topoeval/match_json.h>
 #include <mrpt_topoeval/output.h>
 #include <mrpt_topoeval/report_json.h>
+#include <mrpt_topoeval/scores/ranking.h>
 #include <mrpt_topoeval/scores/scores.h>
 // pipeline: every stage in one call, all parameters in one INI, rawlogs scored over time.
 #include <mrpt_topoeval/Parameters.h>

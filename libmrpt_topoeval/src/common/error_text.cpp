@@ -1,6 +1,8 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include "common/error_text.h"
 
+#include <mrpt_topoeval/errors.h>
+
 #include <cctype>
 
 namespace mrpt_topoeval::internal
@@ -33,3 +35,28 @@ std::string oneLine(const std::exception& e)
 }
 
 }  // namespace mrpt_topoeval::internal
+
+namespace mrpt_topoeval
+{
+std::string messageOnOneLine(const std::string& msg)
+{
+    std::string out;
+    bool pending_break = false;
+    for (const char ch : msg)
+    {
+        if (ch == '\n' || ch == '\r')
+        {
+            pending_break = !out.empty();
+            continue;
+        }
+        if (pending_break)
+        {
+            out += "; ";
+            pending_break = false;
+        }
+        out.push_back(ch);
+    }
+    return out;
+}
+
+}  // namespace mrpt_topoeval

@@ -6,6 +6,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/maps/load_map.h>
 
+#include <cstdint>
 #include <string>
 
 #include "maps/image_header.h"
@@ -31,6 +32,14 @@ struct PixelRule
      * between the thresholds (a probabilistic rendering). */
     bool detect_probabilistic = false;
 };
+
+/** Sets `grid` to exactly `w` x `h` cells of `res` metres, lower-left corner at (x0, y0)
+ * snapped to the cell grid (format_image.cpp says why); `prefix` starts every message. */
+void allocateGrid(mrpt::maps::COccupancyGridMap2D& grid, std::uint64_t w, std::uint64_t h,
+                  double res, double x0, double y0, const std::string& prefix);
+
+/** Clears MRPT's "nothing inserted yet" flag after cells were written directly. */
+void markAsLoaded(mrpt::maps::COccupancyGridMap2D& grid);
 
 /** The rule for an image without an explicit ROS mode, from MapLoadOptions. */
 void applyGreyOption(PixelRule& rule, const MapLoadOptions& opts, const std::string& path);

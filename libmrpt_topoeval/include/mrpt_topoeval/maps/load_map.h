@@ -4,9 +4,11 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace mrpt_topoeval
 {
@@ -84,5 +86,31 @@ bool isMapFile(const std::string& path);
  *         unreadable or truncated image, missing or invalid YAML key, a size over
  *         `opts.max_cells`, wrong serialized class, ...). Never crashes on bad bytes. */
 LoadedMap loadMap(const std::string& path, const MapLoadOptions& opts = {});
+
+/** How mapFromCells() reads its values. */
+enum class CellEncoding
+{
+    /** P(occupied) in [0, 1] per cell, NaN = unknown; kept as probabilities (the
+     * [GraphBuilder] thresholds classify them, as for a ROS `scale` image). */
+    OccupancyProbability,
+    /** nav_msgs/OccupancyGrid values: -1 unknown, 0..100 percent occupied, classified with
+     * `occupied_thresh` / `free_thresh` of MapLoadOptions as map_server's trinary mode does
+     * (occupied above, free below, unknown between). */
+    RosOccupancyGrid,
+};
+
+/** A map from cell values held in memory (a numpy array, a ROS OccupancyGrid message): the
+ * loader for maps that are not files.
+ *
+ * `cells` is row-major, `width` values per row, row 0 at the lowest y (OccupancyGrid order);
+ * the lower-left corner of cell (0, 0) is at (`origin_x_m`, `origin_y_m`), snapped to the cell
+ * grid as the file readers snap a ROS origin. `name` becomes LoadedMap::file and starts every
+ * message; the format is "array".
+ * \throws InputError naming `name` and the problem: no cells, `cells.size()` not
+ *         width x height, over `opts.max_cells`, resolution not > 0, origin not finite, or a
+ *         value out of range (with its row, column and value). */
+LoadedMap mapFromCells(const std::vector<double>& cells, std::size_t width, std::size_t height,
+                       double resolution_m, double origin_x_m, double origin_y_m,
+                       CellEncoding encoding, const MapLoadOptions& opts, const std::string& name);
 
 }  // namespace mrpt_topoeval
