@@ -93,15 +93,15 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
     if (min_free_share <= 0.0 || cls.empty()) return 0;
     constexpr std::uint8_t kOutside = 3, kSeen = 4;
     const std::size_t n = cls.size();
-    std::deque<std::uint32_t> queue;  // breadth first: a frontier, not the whole region
+    std::deque<std::size_t> queue;  // breadth first: a frontier, not the whole region
     // Visits the unknown component of `start`, marking it `mark`, and appends its cells.
-    auto flood = [&](std::size_t start, std::uint8_t mark, std::vector<std::uint32_t>& cells)
+    auto flood = [&](std::size_t start, std::uint8_t mark, std::vector<std::size_t>& cells)
     {
-        queue.assign(1, static_cast<std::uint32_t>(start));
+        queue.assign(1, start);
         cls[start] = mark;
         while (!queue.empty())
         {
-            const std::uint32_t i = queue.front();
+            const std::size_t i = queue.front();
             queue.pop_front();
             cells.push_back(i);
             const int x = static_cast<int>(i % sx), y = static_cast<int>(i / sx);
@@ -113,7 +113,7 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
                     const std::size_t j = static_cast<std::size_t>(yy) * sx + xx;
                     if (cls[j] != kUnknown) continue;
                     cls[j] = mark;
-                    queue.push_back(static_cast<std::uint32_t>(j));
+                    queue.push_back(j);
                 }
         }
     };
@@ -128,7 +128,7 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
     for (int x = 0; x < sx; ++x) outside(x, 0), outside(x, sy - 1);
     for (int y = 0; y < sy; ++y) outside(0, y), outside(sx - 1, y);
     std::size_t filled = 0;
-    std::vector<std::uint32_t> cells;
+    std::vector<std::size_t> cells;
     for (std::size_t start = 0; start < n; ++start)
     {
         if (cls[start] != kUnknown) continue;
@@ -140,7 +140,7 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
             free_border += cls[j] == kFree;
             occupied_border += cls[j] == kOccupied;
         };
-        for (const std::uint32_t i : cells)
+        for (const std::size_t i : cells)
         {
             const int x = static_cast<int>(i % sx), y = static_cast<int>(i / sx);
             if (x > 0) count(i - 1);
@@ -150,7 +150,7 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
         }
         const std::size_t border = free_border + occupied_border;
         if (border == 0 || static_cast<double>(free_border) < min_free_share * border) continue;
-        for (const std::uint32_t i : cells) cls[i] = kFree;
+        for (const std::size_t i : cells) cls[i] = kFree;
         ++filled;
     }
     for (auto& v : cls)
