@@ -471,6 +471,9 @@ TEST(QualityEvaluator, QualityOfASmallMatchedPartShrinksWithItsCoverage)
         const double expected =
             plain.quality * (r.coverage < 0.5 ? std::sqrt(r.coverage / 0.5) : 1.0);
         EXPECT_NEAR(r.quality, expected, 1e-12) << share;
-        if (share < 0.5) EXPECT_LT(r.quality, plain.quality) << share;
+        if (share < 0.5)
+        {
+            EXPECT_LT(r.quality, plain.quality) << share;
+        }
     }
 }

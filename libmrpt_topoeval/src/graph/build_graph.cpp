@@ -2,9 +2,9 @@
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/graph/build_graph.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <unordered_map>
@@ -93,28 +93,30 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
     if (min_free_share <= 0.0 || cls.empty()) return 0;
     constexpr std::uint8_t kOutside = 3, kSeen = 4;
     const std::size_t n = cls.size();
-    std::deque<std::size_t> queue;  // breadth first: a frontier, not the whole region
+    std::vector<std::size_t> stack;  // depth first: the order does not matter, only the set
     // Visits the unknown component of `start`, marking it `mark`, and appends its cells.
     auto flood = [&](std::size_t start, std::uint8_t mark, std::vector<std::size_t>& cells)
     {
-        queue.assign(1, start);
+        stack.assign(1, start);
         cls[start] = mark;
-        while (!queue.empty())
+        while (!stack.empty())
         {
-            const std::size_t i = queue.front();
-            queue.pop_front();
+            const std::size_t i = stack.back();
+            stack.pop_back();
             cells.push_back(i);
             const int x = static_cast<int>(i % sx), y = static_cast<int>(i / sx);
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                {
-                    const int xx = x + dx, yy = y + dy;
-                    if ((dx == 0 && dy == 0) || xx < 0 || yy < 0 || xx >= sx || yy >= sy) continue;
-                    const std::size_t j = static_cast<std::size_t>(yy) * sx + xx;
-                    if (cls[j] != kUnknown) continue;
-                    cls[j] = mark;
-                    queue.push_back(j);
-                }
+            const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, sx - 1);
+            const int y0 = std::max(y - 1, 0), y1 = std::min(y + 1, sy - 1);
+            for (int yy = y0; yy <= y1; ++yy)
+            {
+                std::uint8_t* row = &cls[static_cast<std::size_t>(yy) * sx];
+                for (int xx = x0; xx <= x1; ++xx)
+                    if (row[xx] == kUnknown)
+                    {
+                        row[xx] = mark;
+                        stack.push_back(static_cast<std::size_t>(yy) * sx + xx);
+                    }
+            }
         }
     };
     // The outside (often most of the grid) by OpenCV's scan-line flood fill, 8-connected.
