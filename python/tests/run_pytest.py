@@ -1,7 +1,9 @@
 """Runs pytest for ctest: exit 77 (ctest's SKIP_RETURN_CODE) when a package the tests need is
 missing, else pytest's exit code. Usage: run_pytest.py --needs numpy pytest -- TEST.py ..."""
 import importlib
+import os
 import sys
+import tempfile
 
 
 def main():
@@ -22,7 +24,15 @@ def main():
 
     import pytest
 
-    sys.exit(pytest.main(["-q", "-p", "no:cacheprovider", "-rs"] + argv[split + 1:]))
+    # A temporary folder of this run's own: concurrent pytest runs (ctest -j2 runs python_api
+    # and python_batch side by side) otherwise share /tmp/pytest-of-USER, and each one's
+    # clean-up of old runs can delete the other's folders while it works in them.
+    tests = argv[split + 1:]
+    name = os.path.splitext(os.path.basename(tests[0]))[0] if tests else "pytest"
+    work = os.environ.get("TOPOEVAL_WORK_DIR", tempfile.gettempdir())
+    os.makedirs(work, exist_ok=True)
+    base = os.path.join(work, "pytest-" + name)
+    sys.exit(pytest.main(["-q", "-p", "no:cacheprovider", "-rs", "--basetemp", base] + tests))
 
 
 # Guarded: Dask's LocalCluster starts its workers with multiprocessing "spawn", which imports
