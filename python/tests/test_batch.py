@@ -71,6 +71,13 @@ def read_csv(path):
 class Cluster:
     def __init__(self, tmp):
         self.procs = []
+        try:
+            self._start_all(tmp)
+        except BaseException:
+            self.close()  # no orphan scheduler or worker when the start fails half way
+            raise
+
+    def _start_all(self, tmp):
         sched_file = os.path.join(tmp, "scheduler.json")
         self.scheduler = self.start(dask_command("scheduler") + [
             "--host", "127.0.0.1", "--port", "0", "--no-dashboard",
