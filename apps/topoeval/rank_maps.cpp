@@ -13,9 +13,7 @@
 #include <atomic>
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <filesystem>
-#include <limits>
 #include <new>
 #include <set>
 #include <system_error>

@@ -94,9 +94,12 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
     constexpr std::uint8_t kOutside = 3, kSeen = 4;
     const std::size_t n = cls.size();
     std::vector<std::size_t> stack;  // depth first: the order does not matter, only the set
-    // Visits the unknown component of `start`, marking it `mark`, and appends its cells.
+    // Visits the unknown component of `start`, marking it `mark`, appends its cells and counts
+    // its border: the free and occupied 4-neighbours of its cells.
+    std::size_t free_border = 0, occupied_border = 0;
     auto flood = [&](std::size_t start, std::uint8_t mark, std::vector<std::size_t>& cells)
     {
+        free_border = occupied_border = 0;
         stack.assign(1, start);
         cls[start] = mark;
         while (!stack.empty())
@@ -105,6 +108,12 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
             stack.pop_back();
             cells.push_back(i);
             const int x = static_cast<int>(i % sx), y = static_cast<int>(i / sx);
+            for (const std::size_t j : {x > 0 ? i - 1 : i, x + 1 < sx ? i + 1 : i,
+                                        y > 0 ? i - sx : i, y + 1 < sy ? i + sx : i})
+            {
+                free_border += cls[j] == kFree;
+                occupied_border += cls[j] == kOccupied;
+            }
             const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, sx - 1);
             const int y0 = std::max(y - 1, 0), y1 = std::min(y + 1, sy - 1);
             for (int yy = y0; yy <= y1; ++yy)
@@ -136,20 +145,6 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
         if (cls[start] != kUnknown) continue;
         cells.clear();
         flood(start, kSeen, cells);
-        std::size_t free_border = 0, occupied_border = 0;
-        auto count = [&](std::size_t j)
-        {
-            free_border += cls[j] == kFree;
-            occupied_border += cls[j] == kOccupied;
-        };
-        for (const std::size_t i : cells)
-        {
-            const int x = static_cast<int>(i % sx), y = static_cast<int>(i / sx);
-            if (x > 0) count(i - 1);
-            if (x + 1 < sx) count(i + 1);
-            if (y > 0) count(i - static_cast<std::size_t>(sx));
-            if (y + 1 < sy) count(i + static_cast<std::size_t>(sx));
-        }
         const std::size_t border = free_border + occupied_border;
         if (border == 0 || static_cast<double>(free_border) < min_free_share * border) continue;
         for (const std::size_t i : cells) cls[i] = kFree;
