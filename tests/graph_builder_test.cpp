@@ -488,6 +488,38 @@ TEST(GraphBuilder, UnexploredRoomBehindADoorStaysUnknown)
     for (const auto& v : g.vertices) EXPECT_LT(v.position_m.x(), 7.05);
 }
 
+TEST(GraphBuilder, UnknownSurroundingsDoNotChangeTheGraph)
+{
+    // The same office inside a grid 4 m bigger on every side, the new cells unknown (a SLAM
+    // map's usual margin): the cleaning steps then run on the known cells' box plus a margin
+    // only, and the graph is the same, vertex for vertex, in the same world frame.
+    const auto office = makeOfficeMap();
+    GraphBuildStats st_office;
+    const TopologyGraph a = buildTopologyGraph(office, {}, &st_office);
+    EXPECT_EQ(st_office.work_cells, std::size_t(office.getSizeX()) * office.getSizeY());
+    auto wide = office;
+    wide.resizeGrid(office.getXMin() - 4.0, office.getXMax() + 4.0, office.getYMin() - 4.0,
+                    office.getYMax() + 4.0, 0.5f, false);
+    ASSERT_GT(wide.getSizeX(), office.getSizeX() + 150);
+    GraphBuildStats st_wide;
+    const TopologyGraph b = buildTopologyGraph(wide, {}, &st_wide);
+    EXPECT_LT(st_wide.work_cells, std::size_t(wide.getSizeX()) * wide.getSizeY() * 9 / 10);
+    EXPECT_GT(st_wide.work_cells, std::size_t(office.getSizeX()) * office.getSizeY());
+    expectWellFormed(b);
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    ASSERT_EQ(a.edges.size(), b.edges.size());
+    // MRPT keeps the grid's origin as a float: the moved origin rounds differently (~1e-7 m).
+    for (std::size_t i = 0; i < a.vertices.size(); ++i)
+    {
+        EXPECT_LT((a.vertices[i].position_m - b.vertices[i].position_m).norm(), 1e-5) << i;
+        EXPECT_EQ(a.vertices[i].degree(), b.vertices[i].degree()) << i;
+    }
+    for (std::size_t i = 0; i < a.edges.size(); ++i)
+        EXPECT_NEAR(a.edges[i].length_m, b.edges[i].length_m, 1e-5) << i;
+    EXPECT_EQ(st_wide.sites, st_office.sites);
+    EXPECT_EQ(st_wide.islands_removed, st_office.islands_removed);
+}
+
 TEST(GraphBuilder, OneCellWallGapDoesNotChangeTheGraph)
 {
     // One-cell slots through the 0.2 m wall: one far from the door, one 0.15 m beside it. The

@@ -74,7 +74,10 @@ int verbCompare(int argc, char** argv)
         "Print the full report: every consistency class, every brokenness group, the "
         "alignment, notes and the time per step.",
         cmd);
-    opts.addThreads();
+    opts.addThreads(
+        "Worker threads, 0 = all cores: the two graphs are built side by side, and ICP "
+        "similarity runs in them; overrides [VertexSimilarity] threads. Results do not depend "
+        "on it.");
     opts.addSimilarity();
     opts.addResolution();
     opts.addConfig();

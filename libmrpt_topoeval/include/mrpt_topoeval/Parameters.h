@@ -4,7 +4,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/graph/build_graph.h>
-#include <mrpt_topoeval/maps/load_map.h>
+#include <mrpt_topoeval/maps/MapLoadOptions.h>
 #include <mrpt_topoeval/matching/match_graphs.h>
 #include <mrpt_topoeval/similarity/vertex_similarity.h>
 

@@ -1,7 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
-// [MapLoad]: every key once (common/parameter_table.h); units and reasons in load_map.h.
+// [MapLoad]: every key once (common/parameter_table.h); units and reasons in MapLoadOptions.h.
 
-#include <mrpt_topoeval/maps/load_map.h>
+#include <mrpt_topoeval/maps/MapLoadOptions.h>
 
 #include "common/parameter_table.h"
 

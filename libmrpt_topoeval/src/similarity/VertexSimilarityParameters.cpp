@@ -55,7 +55,8 @@ TOPOEVAL_PARAMETER_TABLE(
          "ICP alignment RMS error where the similarity is 0", above(0)),
     integer(TOPOEVAL_KEY(icp_max_degree_difference), "1",
             "ICP only for pairs whose degrees differ by at most this", atLeast(0)),
-    integer(TOPOEVAL_KEY(threads), "1", "ICP worker threads; 0 = all cores",
+    integer(TOPOEVAL_KEY(threads), "1",
+            "worker threads (ICP pairs; both graphs of evaluate()); 0 = all cores",
             atLeast(0).atMost(256)))
 
 }  // namespace mrpt_topoeval

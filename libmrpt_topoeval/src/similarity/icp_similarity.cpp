@@ -13,6 +13,7 @@
 // threads (README, "Performance"), against "typically less than one minute" in the paper.
 
 #include <mrpt/core/cpu.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/maps/metric_map_types.h>
 #include <mrpt/poses/CPose2D.h>
@@ -33,6 +34,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/threads.h"
 #include "graph/MatchView.h"
 
 namespace mrpt_topoeval
@@ -420,8 +422,7 @@ SimilarityMatrix icpSimilarity(const TopologyGraph& a, const COccupancyGridMap2D
     // thick in one map and three in the other still match.
     job.match_dist_m = std::max(0.15, 3.0 * coarse_res);
 
-    unsigned n_threads = p.threads > 0 ? static_cast<unsigned>(p.threads)
-                                       : std::max(1u, std::thread::hardware_concurrency());
+    unsigned n_threads = internal::workerThreads(p.threads);
     n_threads =
         static_cast<unsigned>(std::min<std::size_t>(n_threads, std::max<std::size_t>(na, 1)));
 

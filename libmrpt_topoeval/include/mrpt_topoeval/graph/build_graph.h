@@ -2,13 +2,18 @@
 #pragma once
 
 #include <mrpt/config/CLoadableOptions.h>
-#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/TopologyGraph.h>
 
 #include <cstddef>
 #include <functional>
 #include <map>
 #include <string>
+
+namespace mrpt::maps
+{
+// Only references to grids here: the full class (a heavy header) where a grid is made or read.
+class COccupancyGridMap2D;
+}  // namespace mrpt::maps
 
 namespace mrpt_topoeval
 {
@@ -101,11 +106,14 @@ struct GraphBuildStats
 {
     std::size_t islands_removed = 0;         //!< Free-standing obstacles below min_island_size_m.
     std::size_t unknown_regions_filled = 0;  //!< Enclosed unknown regions made free.
-    std::size_t sites = 0;                   //!< Obstacle cells used as Voronoi sites.
-    std::size_t voronoi_vertices = 0;        //!< Voronoi vertices inside the grid (after merging).
-    std::size_t voronoi_edges = 0;           //!< Voronoi edges inside the grid.
-    std::size_t voronoi_edges_kept = 0;      //!< ... with enough clearance.
-    std::size_t vertices_initial = 0;        //!< Topology Graph before pruning.
+    /** Cells the cleaning steps ran on: the known cells' bounding box with a margin of unknown
+     * cells, or the whole grid when that box is over 90 % of it. */
+    std::size_t work_cells = 0;
+    std::size_t sites = 0;               //!< Obstacle cells used as Voronoi sites.
+    std::size_t voronoi_vertices = 0;    //!< Voronoi vertices inside the grid (after merging).
+    std::size_t voronoi_edges = 0;       //!< Voronoi edges inside the grid.
+    std::size_t voronoi_edges_kept = 0;  //!< ... with enough clearance.
+    std::size_t vertices_initial = 0;    //!< Topology Graph before pruning.
     std::size_t vertices_after_prune = 0;
     std::size_t vertices_after_alpha = 0;
     std::size_t vertices_after_component = 0;

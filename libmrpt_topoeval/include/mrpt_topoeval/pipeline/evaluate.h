@@ -9,7 +9,6 @@
 // vertexSimilarity(...)                                  the similarity [VertexSimilarity] mode
 //                                                        chooses (attributes or ICP)
 
-#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/QualityReport.h>
 #include <mrpt_topoeval/TopologyGraph.h>
@@ -17,6 +16,12 @@
 
 #include <map>
 #include <string>
+
+namespace mrpt::maps
+{
+// Only references to grids here: the full class (a heavy header) where a grid is made or read.
+class COccupancyGridMap2D;
+}  // namespace mrpt::maps
 
 namespace mrpt_topoeval
 {
@@ -31,7 +36,9 @@ SimilarityMatrix vertexSimilarity(const TopologyGraph& gt,
                                   std::map<std::string, double>* timing_ms = nullptr);
 
 /** The one-call pipeline: both graphs, vertex similarity (attributes or ICP as configured),
- * match, evaluation. Graphs are returned through the pointers if given. */
+ * match, evaluation. Graphs are returned through the pointers if given. With
+ * `params.similarity.threads` other than 1 the two graphs are built side by side, on this thread
+ * and one more; the result does not depend on it. */
 QualityReport evaluate(const mrpt::maps::COccupancyGridMap2D& ground_truth,
                        const mrpt::maps::COccupancyGridMap2D& map, const Parameters& params,
                        TopologyGraph* gt_graph = nullptr, TopologyGraph* map_graph = nullptr);

@@ -2,12 +2,17 @@
 #pragma once
 
 #include <mrpt/config/CLoadableOptions.h>
-#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/TopologyGraph.h>
 
 #include <Eigen/Core>
 #include <map>
 #include <string>
+
+namespace mrpt::maps
+{
+// Only references to grids here: the full class (a heavy header) where a grid is made or read.
+class COccupancyGridMap2D;
+}  // namespace mrpt::maps
 
 namespace mrpt_topoeval
 {
@@ -68,7 +73,9 @@ struct VertexSimilarityParameters : public mrpt::config::CLoadableOptions
     double icp_rmse_tolerance_m = 0.25;
     /** Only pairs whose degrees differ by at most this are aligned; others get 0 [1]. */
     int icp_max_degree_difference = 0;
-    /** Worker threads for ICP pairs; 0 = hardware concurrency. Results do not depend on it. */
+    /** Worker threads for ICP pairs, and for building both graphs side by side in
+     * evaluate(ground_truth, map, ...) when above 1; 0 = hardware concurrency. Results do not
+     * depend on it. */
     int threads = 0;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
