@@ -3,9 +3,11 @@
 // skipped when absent) and on synthetic buildings of growing size.
 //
 // Counters: `vertices` of the graph, `cells` of the grid, `sites` (obstacle cells used as
-// Voronoi sites) and `peak_rss_MB`, the process's peak resident memory (getrusage ru_maxrss)
-// after the benchmark. The peak only grows during a run (benchmarks run smallest first): for one
-// benchmark's own peak, run it alone, e.g. `--benchmark_filter=LargeBuilding/10000`.
+// Voronoi sites), `ms_cleaning`, `ms_voronoi`, `ms_graph` (the last build's time in the
+// cleaning steps and site search, the Voronoi diagram, and the graph steps after it) and
+// `peak_rss_MB`, the process's peak resident memory (getrusage ru_maxrss) after the benchmark.
+// The peak only grows during a run (benchmarks run smallest first): for one benchmark's own
+// peak, run it alone, e.g. `--benchmark_filter=LargeBuilding/10000`.
 
 #include <benchmark/benchmark.h>
 #include <mrpt_topoeval/graph/build_graph.h>
@@ -49,6 +51,16 @@ void runBuild(benchmark::State& state, const COccupancyGridMap2D& grid)
     state.counters["vertices"] = static_cast<double>(vertices);
     state.counters["cells"] = static_cast<double>(grid.getSizeX()) * grid.getSizeY();
     state.counters["sites"] = static_cast<double>(stats.sites);
+    // Where the time goes (last iteration): the cleaning steps with the site search, the
+    // Voronoi diagram, and the graph steps after it [ms].
+    double cleaning = 0.0;
+    for (const char* step :
+         {"classify", "close_gaps", "enclosed_unknown", "islands", "unknown_specks", "sites"})
+        cleaning += stats.timing_ms[step];
+    const double voronoi = stats.timing_ms["voronoi"];
+    state.counters["ms_cleaning"] = cleaning;
+    state.counters["ms_voronoi"] = voronoi;
+    state.counters["ms_graph"] = stats.timing_ms["total"] - cleaning - voronoi;
     state.counters["peak_rss_MB"] = peakRssMB();
 }
 

@@ -63,6 +63,8 @@ TOPOEVAL_PARAMETER_TABLE(
             "consistent: pairs linked within this many edges in both maps", atLeast(1)),
     real(TOPOEVAL_KEY(min_group_extent_m), "m",
          "consistent: a group spans at least this in the ground truth", atLeast(0)),
+    real(TOPOEVAL_KEY(max_group_squared_error_m2), "m^2",
+         "consistent: a group's rigid fit has at most this mean squared error", above(0)),
     integer(TOPOEVAL_KEY(max_groups), "1", "consistent: most groups (rigid parts)", atLeast(1)),
     integer(TOPOEVAL_KEY(max_clique_steps), "1",
             "consistent: branch-and-bound steps per clique search", atLeast(1)),

@@ -342,6 +342,16 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             for (int j : group)
                 extent = std::max(extent, (pg(cands[i].gt) - pg(cands[j].gt)).norm());
         if (extent < p.min_group_extent_m) return false;
+        {
+            // One rigid part, as the paper's brokenness groups are (its SquaredErrorThreshold):
+            // a chance group keeps every pair within its own tolerance but spreads the errors
+            // to the limit (two column halls of different buildings: 0 of 17 pairs true).
+            std::vector<Eigen::Vector2d> a, b;
+            for (int i : group) a.push_back(pg(cands[i].gt)), b.push_back(pm(cands[i].map));
+            double mse = 0.0;
+            hornAlign(a, b, &mse);
+            if (mse > p.max_group_squared_error_m2) return false;
+        }
         if (!out.cores.empty())
         {
             // A further part meets the accepted groups at its cut: where one of its

@@ -100,6 +100,12 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
     /** ... and when its vertices span at least this far in the ground truth (a group of
      * vertices all within a few metres fixes no geometry) [m]. */
     double min_group_extent_m = 4.0;
+    /** ... and when the rigid fit of its pairs has a mean squared error of at most this: a
+     * group is one rigid part, as the evaluation's brokenness groups are (the paper's
+     * SquaredErrorThreshold, the same 0.2 m^2 as [Quality] brokenness_max_squared_error_m2).
+     * Each pair within its own tolerance is not enough: a chance group spreads its errors
+     * to the limit of every pair's [m^2]. */
+    double max_group_squared_error_m2 = 0.2;
     /** Most groups (each one rigid part of the map: a broken map gives one per part) [1]. */
     int max_groups = 8;
     /** Branch-and-bound steps per clique search; when spent the best clique so far is taken
