@@ -23,6 +23,7 @@
 #include <optional>
 #include <set>
 
+#include "../libmrpt_topoeval/src/geometry/horn.h"
 #include "../libmrpt_topoeval/src/graph/MatchView.h"
 #include "synthetic_maps.h"
 #include "test_paths.h"
@@ -316,6 +317,46 @@ TEST(ConsistentMatching, DifferentBuildingsShareLittle)
     {
         const Score s = scoreGrids(name, *a, *b, never);
         EXPECT_LE(double(s.matched), 0.15 * double(s.match.pairs.size() + s.match.missing)) << name;
+    }
+}
+
+TEST(ConsistentMatching, EveryGroupIsOneRigidPart)
+{
+    // A group is one rigid part (max_group_squared_error_m2, the paper's brokenness threshold):
+    // the rigid fit of its core pairs, in any match, has at most that mean squared error, so the
+    // evaluation's brokenness step can place each group. Maps of one place (moved, broken) and
+    // near-twin buildings (the campus with other corridor spacings), whose chance groups
+    // otherwise keep each pair within its tolerance but not the group.
+    const Parameters params = tunedParameters();
+    const auto campus = makeCampusMap(), campus_2 = makeCampusMap(2), campus_3 = makeCampusMap(3);
+    const auto moved = transformGrid(campus, 37 * kDeg, Eigen::Vector2d(3.0, -2.0));
+    const Eigen::Vector2d pivot(31.0, 18.0);
+    const auto broken =
+        breakMap(campus, pivot, -20 * kDeg, [](double x, double) { return x > 31.0; });
+    for (auto [name, a, b] : {std::tuple{"campus_moved", &campus, &moved},
+                              {"campus_broken", &campus, &broken},
+                              {"campus_1_vs_2", &campus, &campus_2},
+                              {"campus_2_vs_3", &campus_2, &campus_3},
+                              {"campus_3_vs_1", &campus_3, &campus}})
+    {
+        const TopologyGraph gt = buildTopologyGraph(*a, params.graph);
+        const TopologyGraph map = buildTopologyGraph(*b, params.graph);
+        const GraphMatch m =
+            matchGraphs(gt, map, attributeSimilarity(gt, map, params.similarity), params.matcher);
+        std::map<int, std::pair<std::vector<Eigen::Vector2d>, std::vector<Eigen::Vector2d>>> cores;
+        for (const VertexPair& p : m.pairs)
+            if (p.stage == MatchStage::Isomorphism)
+            {
+                cores[p.isomorphism].first.push_back(gt.vertices[p.ground_truth].position_m);
+                cores[p.isomorphism].second.push_back(map.vertices[p.map].position_m);
+            }
+        for (const auto& [g, pts] : cores)
+        {
+            double mse = 0.0;
+            internal::hornAlign(pts.first, pts.second, &mse);
+            EXPECT_LE(mse, params.quality.brokenness_max_squared_error_m2 + 1e-12)
+                << name << " group " << g << " of " << pts.first.size() << " pairs";
+        }
     }
 }
 
