@@ -10,6 +10,7 @@
 #include <chrono>
 #include <exception>
 #include <future>
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -81,10 +82,21 @@ QualityReport evaluate(const mrpt::maps::COccupancyGridMap2D& gt_grid,
     // truth's is built on a second thread while this one builds the map's (each build is
     // deterministic and shares nothing, so the result does not depend on it).
     TopologyGraph gt, map;
+    std::future<TopologyGraph> gt_future;
     if (internal::workerThreads(params.similarity.threads) > 1)
     {
-        auto gt_future = std::async(std::launch::async,
-                                    [&] { return buildTopologyGraph(gt_grid, params.graph); });
+        try
+        {
+            gt_future = std::async(std::launch::async,
+                                   [&] { return buildTopologyGraph(gt_grid, params.graph); });
+        }
+        catch (const std::system_error&)
+        {
+            // No thread to be had (a process or container limit): build both here.
+        }
+    }
+    if (gt_future.valid())
+    {
         std::exception_ptr map_error;
         try
         {
