@@ -4,6 +4,7 @@
 // (1..64 cells each), resolution (0.05, 0.1 or 0.2 m), then 4 cells per byte (2 bits each:
 // free, occupied, unknown, free); missing bytes are free.
 
+#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/matching/match_graphs.h>
