@@ -50,6 +50,18 @@ enum CellClass : std::uint8_t
     kFree = 1,
     kOccupied = 2
 };
+// Morphological closing of `mask` with a disc of radius r cells. Outside the grid counts as
+// not in the mask, so the closing adds nothing along the grid's border.
+cv::Mat closedWithDisc(const cv::Mat& mask, int r)
+{
+    cv::Mat closed;
+    const cv::Mat disc =
+        cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1));
+    cv::morphologyEx(mask, closed, cv::MORPH_CLOSE, disc, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT,
+                     cv::Scalar(0));
+    return closed;
+}
+
 // Closing of the free cells with a disc: unknown cells enclosed by free space within the radius
 // become free, occupied cells never change.
 void fillUnknownSpecks(std::vector<std::uint8_t>& cls, int sx, int sy, double radius_cells)
@@ -57,12 +69,7 @@ void fillUnknownSpecks(std::vector<std::uint8_t>& cls, int sx, int sy, double ra
     const int r = static_cast<int>(std::lround(radius_cells));
     if (r < 1 || cls.empty()) return;
     cv::Mat c(sy, sx, CV_8UC1, cls.data());
-    cv::Mat free_mask = (c == kFree), closed;
-    const cv::Mat disc =
-        cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1));
-    cv::morphologyEx(free_mask, closed, cv::MORPH_CLOSE, disc, cv::Point(-1, -1), 1,
-                     cv::BORDER_CONSTANT, cv::Scalar(0));
-    c.setTo(kFree, closed & (c == kUnknown));
+    c.setTo(kFree, closedWithDisc(c == kFree, r) & (c == kUnknown));
 }
 
 // Closing of the obstacle cells with a disc: gaps and notches in walls up to about twice the
@@ -73,13 +80,7 @@ void closeObstacleGaps(std::vector<std::uint8_t>& cls, int sx, int sy, double ra
     const int r = static_cast<int>(std::lround(radius_cells));
     if (r < 1 || cls.empty()) return;
     cv::Mat c(sy, sx, CV_8UC1, cls.data());
-    cv::Mat occ = (c == kOccupied), closed;
-    const cv::Mat disc =
-        cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1));
-    // Outside the grid counts as not obstacle, so the closing adds nothing along the border.
-    cv::morphologyEx(occ, closed, cv::MORPH_CLOSE, disc, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT,
-                     cv::Scalar(0));
-    c.setTo(kOccupied, closed);
+    c.setTo(kOccupied, closedWithDisc(c == kOccupied, r));
 }
 
 // Enclosed unknown regions: 8-connected components of unknown cells that do not reach the

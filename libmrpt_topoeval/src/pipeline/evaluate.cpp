@@ -37,12 +37,12 @@ double msSince(Clock::time_point t)
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
-// Similarity, match and evaluation of two built graphs; `t_graphs` is the time their building
-// took, `t0` when it started.
+// Similarity, match and evaluation of two graphs built since `t0` (their time is "graphs").
 QualityReport scoreGraphs(const TopologyGraph& gt, const mrpt::maps::COccupancyGridMap2D& gt_grid,
                           const TopologyGraph& map, const mrpt::maps::COccupancyGridMap2D& map_grid,
-                          const Parameters& params, double t_graphs, Clock::time_point t0)
+                          const Parameters& params, Clock::time_point t0)
 {
+    const double t_graphs = msSince(t0);
     const auto t1 = Clock::now();
     const SimilarityMatrix s = vertexSimilarity(gt, gt_grid, map, map_grid, params.similarity);
     const double t_sim = msSince(t1);
@@ -68,7 +68,7 @@ QualityReport evaluate(const TopologyGraph& gt, const mrpt::maps::COccupancyGrid
 {
     const auto t0 = Clock::now();
     TopologyGraph map = buildTopologyGraph(map_grid, params.graph);
-    QualityReport r = scoreGraphs(gt, gt_grid, map, map_grid, params, msSince(t0), t0);
+    QualityReport r = scoreGraphs(gt, gt_grid, map, map_grid, params, t0);
     if (map_out) *map_out = std::move(map);
     return r;
 }
@@ -114,7 +114,7 @@ QualityReport evaluate(const mrpt::maps::COccupancyGridMap2D& gt_grid,
         gt = buildTopologyGraph(gt_grid, params.graph);
         map = buildTopologyGraph(map_grid, params.graph);
     }
-    QualityReport r = scoreGraphs(gt, gt_grid, map, map_grid, params, msSince(t0), t0);
+    QualityReport r = scoreGraphs(gt, gt_grid, map, map_grid, params, t0);
     if (gt_out) *gt_out = std::move(gt);
     if (map_out) *map_out = std::move(map);
     return r;
