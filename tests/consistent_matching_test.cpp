@@ -320,6 +320,41 @@ TEST(ConsistentMatching, DifferentBuildingsShareLittle)
     }
 }
 
+TEST(ConsistentMatching, ARoomThatIsAGraphPieceOfItsOwnIsMatched)
+{
+    // A corridor with rooms at its west end, and 3 m east of its dead end, behind the wall, a
+    // T-shaped room with no door: a graph piece of its own (a floor plan's room whose door is
+    // drawn closed: lab_ipa's furnished plan). Its vertices are 6-11 m from the corridor's dead
+    // end and over 25 m from every other vertex. The group's pairs within growing_radius_m
+    // (12 m) of them are that one dead end, too few for a fit: they are placed by the group's 3
+    // nearest pairs. Every one of them is then matched, and truly.
+    GridSketch s(52.0, 14.0);
+    s.carve(1.0, 6.0, 40.0, 7.6);
+    s.carve(2.0, 8.6, 6.0, 12.0).carve(3.5, 7.6, 4.5, 8.6);
+    s.carve(7.0, 8.6, 12.0, 12.0).carve(9.0, 7.6, 10.0, 8.6);
+    s.carve(2.0, 1.0, 7.0, 5.0).carve(4.0, 5.0, 5.0, 6.0);
+    s.carve(8.0, 1.0, 13.0, 5.0).carve(10.0, 5.0, 11.0, 6.0);
+    s.carve(43.0, 2.0, 51.0, 4.0).carve(46.0, 4.0, 48.0, 12.0);  // the closed room
+    const COccupancyGridMap2D& gt_grid = s.grid();
+    const TopologyGraph gt = buildTopologyGraph(gt_grid, tunedParameters().graph);
+    std::vector<int> room;
+    for (const auto& v : gt.vertices)
+        if (v.position_m.x() > 42.0) room.push_back(v.id);
+    ASSERT_EQ(room.size(), 4u) << "a junction and three dead ends";
+    for (double yaw : {0.0, 31.0})
+    {
+        const Score sc = scoreMoved("closed_room_" + std::to_string(int(yaw)), gt_grid, gt_grid,
+                                    yaw, {2.0, -1.5});
+        EXPECT_EQ(sc.correct, sc.matched) << yaw;
+        for (int a : room)
+        {
+            const auto it = std::find_if(sc.match.pairs.begin(), sc.match.pairs.end(),
+                                         [&](const VertexPair& p) { return p.ground_truth == a; });
+            EXPECT_NE(it, sc.match.pairs.end()) << "room vertex " << a << " at " << yaw << " deg";
+        }
+    }
+}
+
 TEST(ConsistentMatching, EveryGroupIsOneRigidPart)
 {
     // A group is one rigid part (max_group_squared_error_m2, the paper's brokenness threshold):

@@ -565,3 +565,41 @@ TEST(GraphBuilder, EveryPieceOfAUsefulSizeIsKept)
     largest.min_component_length_m = 7.0;  // the short corridor's edge is ~6.5 m
     EXPECT_EQ(buildTopologyGraph(s.grid(), largest).vertices.size(), 2u);
 }
+
+TEST(GraphBuilder, RotatedFloorPlanOnABlackPageKeepsItsGraph)
+{
+    // A floor plan drawn on a black page (everything but the building occupied), the office
+    // 1.5 m from the page's west edge and 8-10 m from the others, rotated by 25 degrees: the
+    // page's edge becomes a staircase of obstacle cells bordering the unknown around it, and
+    // the alpha shape a band along it, joined to the building's where they are within
+    // 2 x alpha_radius_m. The black between page and building is then a hole of the shape
+    // whose boundary runs along both, longer than the page's outer loop. Taken as the outer
+    // boundary (the floor plan lab_ipa rotated, in the validation corpus), it cut the whole
+    // graph. The same plan with unknown instead of the page's black gives the same graph.
+    const auto office = makeOfficeMap();
+    const Eigen::Vector2d offset(1.5, 10.0);
+    GridSketch page(43.0, 42.0);
+    auto black = page.grid();
+    for (int cy = 0; cy < int(office.getSizeY()); ++cy)
+        for (int cx = 0; cx < int(office.getSizeX()); ++cx)
+            if (office.getCell(cx, cy) > 0.5f)
+                black.setCell(black.x2idx(office.idx2x(cx) + offset.x()),
+                              black.y2idx(office.idx2y(cy) + offset.y()), 1.0f);
+    auto grey = black;  // the office's own 32 m x 22 m page, unknown around it
+    for (int cy = 0; cy < int(grey.getSizeY()); ++cy)
+        for (int cx = 0; cx < int(grey.getSizeX()); ++cx)
+        {
+            const Eigen::Vector2d p(grey.idx2x(cx) - offset.x(), grey.idx2y(cy) - offset.y());
+            if (p.x() < 0.0 || p.y() < 0.0 || p.x() > 32.0 || p.y() > 22.0)
+                grey.setCell(cx, cy, 0.5f);
+        }
+    const double yaw = 25.0 * kDeg;
+    const TopologyGraph on_grey = buildTopologyGraph(transformGrid(grey, yaw, {0.0, 0.0}));
+    ASSERT_GE(on_grey.vertices.size(), 20u);
+    GraphBuildStats st;
+    const TopologyGraph on_black =
+        buildTopologyGraph(transformGrid(black, yaw, {0.0, 0.0}), {}, &st);
+    expectWellFormed(on_black);
+    EXPECT_EQ(st.vertices_after_alpha, st.vertices_after_prune);  // nothing of it is outside
+    expectSameGraph(on_grey, on_black);
+}

@@ -511,6 +511,26 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     std::vector<std::vector<int>> two_gt(n_gt), two_map(n_map);
     for (int a = 0; a < n_gt; ++a) two_gt[a] = nearInGraph(ctx.gt, a, 2);
     for (int b = 0; b < n_map; ++b) two_map[b] = nearInGraph(ctx.map, b, 2);
+    // The ground truth's graph pieces, and which hold a group's core pair.
+    std::vector<int> piece_of_gt(n_gt, -1);
+    std::vector<char> piece_has_core;
+    for (int a0 = 0; a0 < n_gt; ++a0)
+    {
+        if (piece_of_gt[a0] >= 0) continue;
+        const int piece = int(piece_has_core.size());
+        piece_has_core.push_back(0);
+        std::vector<int> stack{a0};
+        piece_of_gt[a0] = piece;
+        while (!stack.empty())
+        {
+            const int x = stack.back();
+            stack.pop_back();
+            piece_has_core.back() |= group_of_gt[x] >= 0;
+            for (const auto& inc : ctx.gt.v[x].ring)
+                if (piece_of_gt[inc.other] < 0)
+                    piece_of_gt[inc.other] = piece, stack.push_back(inc.other);
+        }
+    }
     std::vector<int> all_map(static_cast<std::size_t>(n_map));
     std::iota(all_map.begin(), all_map.end(), 0);
     for (const bool geometric : {false, true})
@@ -532,11 +552,18 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                     std::vector<int> map_near;
                     bool linked = false;
                     for (int x = 0; x < n_gt; ++x)
-                    {
-                        if (group_of_gt[x] != int(g)) continue;
-                        const double d = (pg(x) - pg(a)).norm();
-                        if (d <= p.growing_radius_m) near.emplace_back(d, x);
-                    }
+                        if (group_of_gt[x] == int(g)) near.emplace_back((pg(x) - pg(a)).norm(), x);
+                    std::sort(near.begin(), near.end());
+                    // The pairs within growing_radius_m. In the pass without links, a vertex
+                    // of a graph piece that holds no group's core (a room the plan's walls cut
+                    // off) farther than that from all of a group's pairs but one is placed by
+                    // the group's 3 nearest pairs, its tolerance grown with the distance. Not
+                    // elsewhere: far from a group in a piece it holds, the map may be broken.
+                    std::size_t n_near = 0;
+                    while (n_near < near.size() && near[n_near].first <= p.growing_radius_m)
+                        ++n_near;
+                    if (geometric && n_near < 2 && !piece_has_core[piece_of_gt[a]]) n_near = 3;
+                    near.resize(std::min(near.size(), n_near));
                     if (near.size() < 2) continue;
                     if (geometric)
                         map_near = all_map;
@@ -551,7 +578,6 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                             }
                         if (!linked) continue;
                     }
-                    std::sort(near.begin(), near.end());
                     if (near.size() > 8) near.resize(8);
                     std::vector<Eigen::Vector2d> ga, mb;
                     for (const auto& [d, x] : near)

@@ -82,7 +82,15 @@ std::vector<Eigen::Vector2d> longestBoundaryPolygon(
         }
         if (!closed) continue;
         ++count;
-        if (len > best_len)
+        // The segments run with the shape's interior on their left, so an outer loop runs
+        // counter-clockwise (positive area) and a hole's boundary clockwise. A hole's can be the
+        // longer: a floor plan drawn on a black page and then rotated has an obstacle band along
+        // the page's edge, and the black between page and building is one hole whose boundary
+        // runs along both. The outer shape is never a hole.
+        double twice_area = 0.0;
+        for (std::size_t i = 0; i < poly.size(); ++i)
+            twice_area += cross(poly[i], poly[(i + 1) % poly.size()]);
+        if (twice_area > 0.0 && len > best_len)
         {
             best_len = len;
             best = std::move(poly);

@@ -9,8 +9,9 @@
 namespace mrpt_topoeval::internal
 {
 /** Chains oriented boundary segments (interior on the left, endpoints on integer cell
- * coordinates) into closed polygons and returns the one with the longest perimeter: the map's
- * outer boundary (paper II-B). `num_polygons` receives how many closed polygons there were. */
+ * coordinates) into closed polygons and returns the outer one (counter-clockwise: a hole's
+ * boundary runs clockwise) with the longest perimeter: the map's outer boundary (paper II-B).
+ * `num_polygons` receives how many closed polygons there were, holes included. */
 std::vector<Eigen::Vector2d> longestBoundaryPolygon(
     const std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>& segments,
     std::size_t* num_polygons = nullptr);
