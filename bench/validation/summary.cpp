@@ -15,6 +15,10 @@ namespace mrpt_topoeval::validation
 namespace
 {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
+/** A broken case is exactly right when the found brokenness equals the injected one and every
+ * group's rotation is within this of its part's (issue 11's "each group's rotation within 3
+ * degrees") [deg]. */
+constexpr double kExactRotationErrorDeg = 3.0;
 
 const std::vector<std::string>& kindOrder()
 {
@@ -81,11 +85,14 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
         if (s.brokenness_injected >= 0 && r->spec.kind == "broken")
         {
             ++a.broken;
-            if (s.brokenness_found == s.brokenness_injected) ++a.broken_exact;
+            // Issue 11: the right number of breaks, and each group turned as its part is.
+            const bool exact = s.brokenness_found == s.brokenness_injected &&
+                               !(s.max_group_rotation_error_deg > kExactRotationErrorDeg);
+            if (exact) ++a.broken_exact;
             if (s.parts_with_5_counterparts >= s.brokenness_injected + 1)
             {
                 ++a.broken_measurable;
-                if (s.brokenness_found == s.brokenness_injected) ++a.broken_measurable_exact;
+                if (exact) ++a.broken_measurable_exact;
             }
             if (std::isfinite(s.max_group_rotation_error_deg))
                 a.max_rotation_error_deg =
