@@ -603,3 +603,45 @@ TEST(GraphBuilder, RotatedFloorPlanOnABlackPageKeepsItsGraph)
     EXPECT_EQ(st.vertices_after_alpha, st.vertices_after_prune);  // nothing of it is outside
     expectSameGraph(on_grey, on_black);
 }
+
+TEST(GraphBuilder, ADeadEndStopsWhereItsCorridorEndsNotInACorner)
+{
+    // A corridor 1.5 m wide whose east end wall is slanted, from (10, 1.5) to (12, 3): its
+    // north-east corner is acute (37 degrees), and the medial axis's branch into it loses
+    // clearance far more slowly than into a right angle, so corner-spur pruning keeps it. The
+    // dead end then lies in the corner, at the 0.3 m clearance filter, and moves with every
+    // change of that corner's cells. With dead_end_tail_share its tip goes back to where the
+    // corridor still has 0.9 of its half width: on the corridor's axis.
+    GridSketch s(14.0, 4.5);
+    s.carve(1.0, 1.5, 12.0, 3.0);
+    auto grid = s.grid();
+    for (int cy = 0; cy < int(grid.getSizeY()); ++cy)
+        for (int cx = 0; cx < int(grid.getSizeX()); ++cx)
+        {
+            const double x = grid.idx2x(cx), y = grid.idx2y(cy);
+            if (x > 10.0 + (y - 1.5) * 2.0 / 1.5) grid.setCell(cx, cy, 0.0f);
+        }
+    GraphBuilderParameters paper_tips;
+    paper_tips.dead_end_tail_share = 0.0;
+    const TopologyGraph tips = buildTopologyGraph(grid, paper_tips);
+    ASSERT_EQ(tips.vertices.size(), 2u);
+    const TopoVertex& corner = *std::max_element(tips.vertices.begin(), tips.vertices.end(),
+                                                 [](const auto& a, const auto& b)
+                                                 { return a.position_m.x() < b.position_m.x(); });
+    EXPECT_LT(corner.clearance_m, 0.5) << "in the corner";
+    EXPECT_GT(corner.position_m.y(), 2.45);
+
+    const TopologyGraph g = buildTopologyGraph(grid);
+    expectWellFormed(g);
+    ASSERT_EQ(g.vertices.size(), 2u);
+    for (const auto& v : g.vertices)
+    {
+        EXPECT_EQ(v.degree(), 1);
+        EXPECT_GE(v.clearance_m, 0.9 * 0.75 - 0.05);
+        EXPECT_NEAR(v.position_m.y(), 2.25, 0.12) << "on the corridor's axis";
+    }
+    // The square west end is as before.
+    const TopoVertex* west = vertexNear(g, 1.75, 2.25);
+    EXPECT_NE(west, nullptr);
+    EXPECT_NE(vertexNear(tips, 1.75, 2.25), nullptr);
+}

@@ -142,9 +142,13 @@ TEST(GraphStability, RealIntel) { expectStableRealMap("radish/intel-corrected_re
 // graph has their branches (69 non-spurious vertices, was 36); rotated by 290 deg and resampled
 // it has 62 (10.1 %). The bound is what was measured.
 TEST(GraphStability, RealAces) { expectStableRealMap("radish/aces-corrected_ref.yaml", 0.11); }
+// Freiburg 079 rotated by 17 degrees keeps 86 of its 96 non-spurious vertices (10.4 %; 88 before
+// dead ends were moved out of corners): dead-end edges moved back under
+// spurious_dead_end_length_m become spurious. The corpus's measure of stability (ground-truth
+// vertices with a counterpart, doc/validation.md) rose for every kind of map with that change.
 TEST(GraphStability, RealFreiburg079)
 {
-    expectStableRealMap("radish/freiburg-079-corrected_ref.yaml");
+    expectStableRealMap("radish/freiburg-079-corrected_ref.yaml", 0.11);
 }
 TEST(GraphStability, RealFreiburg101)
 {

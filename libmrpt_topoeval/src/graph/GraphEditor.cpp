@@ -266,6 +266,58 @@ std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio, d
     return removed;
 }
 
+std::size_t GraphEditor::retractDeadEndTails(double share, double wedge_ratio)
+{
+    if (share <= 0.0 || wedge_ratio <= 0.0) return 0;
+    std::size_t moved = 0;
+    // Edge e runs from its anchor a to the dead end b. The tail is what a wedge (a corner of
+    // the free space) makes of the branch: points q whose clearance exceeds the tip's by at
+    // least 1 / wedge_ratio of their straight distance to the tip (a corner of angle t gives
+    // 1 / sin(t / 2)). Its largest clearance is the width the branch had before the corner;
+    // the tip goes back to the last point with `share` of it. Points within the anchor's
+    // clearance disc are not looked at.
+    auto retract = [&](int e, double disc)
+    {
+        Edge& E = m_e[e];
+        const std::size_t n = E.path.size();
+        const Eigen::Vector2d anchor = E.path.front(), tip = E.path.back();
+        const double c_tip = E.clearance.back();
+        double widest = c_tip;
+        for (std::size_t i = n - 1; i-- > 1;)
+        {
+            if ((E.path[i] - anchor).norm() <= disc) break;
+            if ((E.path[i] - tip).norm() <= wedge_ratio * (E.clearance[i] - c_tip))
+                widest = std::max(widest, E.clearance[i]);
+        }
+        std::size_t k = n - 1;
+        while (k > 0 && E.clearance[k] < share * widest) --k;
+        if (k == 0 || k + 1 == n) return;
+        const int old_end = E.b;
+        truncateEdge(e, k + 1);
+        if (degree(old_end) == 0) m_v[old_end].alive = false;
+        ++moved;
+    };
+    const int ne = static_cast<int>(m_e.size());
+    for (int e = 0; e < ne; ++e)
+    {
+        if (!m_e[e].alive || m_e[e].a == m_e[e].b) continue;
+        const bool a_end = degree(m_e[e].a) == 1, b_end = degree(m_e[e].b) == 1;
+        if (!a_end && !b_end) continue;
+        if (a_end && b_end)
+        {
+            // A lone corridor: both of its ends.
+            retract(e, 0.0);
+            if (!m_e[e].alive) continue;
+            reverseEdge(m_e[e]);
+            retract(e, 0.0);
+            continue;
+        }
+        if (a_end) reverseEdge(m_e[e]);  // a: the junction, b: the dead end
+        retract(e, m_v[m_e[e].a].clearance);
+    }
+    return moved;
+}
+
 void GraphEditor::keepComponents(double min_length)
 {
     const int nv = static_cast<int>(m_v.size());

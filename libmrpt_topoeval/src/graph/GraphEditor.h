@@ -53,6 +53,13 @@ public:
     std::size_t pruneDeadEnds(double max_length, double corner_ratio, double disc_ratio,
                               double disc_max_chord);
 
+    /** Moves the tip of every dead end back along its path, out of the corner it may run
+     * into: the tail is the points whose clearance exceeds the tip's by at least 1 /
+     * `wedge_ratio` of their distance to the tip (outside the junction's disc); the tip goes
+     * back to the last point whose clearance is at least `share` times the tail's largest,
+     * and the rest is cut off. Returns the dead ends moved. */
+    std::size_t retractDeadEndTails(double share, double wedge_ratio);
+
     /** Cuts the graph to a region (paper II-B, the alpha-shape cut): vertices outside go with
      * their edges, except that an edge from an inside vertex to an outside one is cut where
      * its path leaves the region and ends in a new dead end there, so a corridor that leaves

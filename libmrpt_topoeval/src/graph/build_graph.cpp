@@ -432,6 +432,10 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
     timer.lap("alpha_cut");
     snapshot("alpha_cut");
 
+    // Ours (issue 11): a dead end ends where its room or corridor ends, not in a corner.
+    g.retractDeadEndTails(params.dead_end_tail_share, params.dead_end_tail_ratio);
+    timer.lap("tails");
+
     g.keepComponents(params.min_component_length_m / res);
     stats.vertices_after_component = g.numAliveVertices();
     timer.lap("largest_component");

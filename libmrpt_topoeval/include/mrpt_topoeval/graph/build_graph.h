@@ -75,6 +75,17 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
     /** ... but only dead ends shorter than this (straight distance) are judged by the disc
      * rule: a long branch of a big room is a real feature even inside the room's disc [m]. */
     double junction_disc_max_length_m = 1.50;
+    /** A dead end stops where its room or corridor ends, not in a corner. A corner branch
+     * that survives pruning on one map and not on the other (an acute corner, or the cells of
+     * a right one) moves the dead end from the end of its room or corridor into the corner,
+     * 1-2 m away. The branch's tail into a corner is the points whose clearance exceeds the
+     * tip's by at least 1 / dead_end_tail_ratio of their distance to the tip; the tip is moved
+     * back to where the clearance reaches this share of the tail's largest. 0 keeps the tips
+     * where the skeleton ends (paper) [ratio]. */
+    double dead_end_tail_share = 0.9;
+    /** A corner of angle t makes a tail whose distance to the tip is 1 / sin(t / 2) times the
+     * clearance it gains: 4 takes corners from 29 degrees up [ratio]. */
+    double dead_end_tail_ratio = 4.0;
     /** Remaining dead-end edges shorter than this, and their end vertex, are marked spurious
      * (paper II-C) [m]. */
     double spurious_dead_end_length_m = 1.00;
