@@ -417,8 +417,26 @@ TEST(ConsistentMatching, Gh25FloorPlanAgainstIcpSlam)
                                                        Eigen::Vector2d(20.03, 9.08));
                             });
     if (!s) GTEST_SKIP() << "no ../shared/data";
-    EXPECT_GE(s->matched, 8u);
+    // Issue 11: coverage >= 0.8, every pair true (12 of 14 since dead ends stop out of corners).
+    EXPECT_GE(double(s->matched) / double(s->matched + s->match.missing), 0.8);
     EXPECT_EQ(s->correct, s->matched);
+}
+
+TEST(ConsistentMatching, FurnishedFloorPlans)
+{
+    // Issue 11: each plain IPA floor plan against its furnished copy (the same pixels, the
+    // furniture drawn in): at least 70 % of the plain plan's matchable vertices matched, every
+    // pair true. lab_ipa needs growing into its lower-right room, a graph piece of its own
+    // (11 of 16 without the linked pass after the geometric one, 13 with it).
+    for (const char* plan : {"Freiburg79_scan", "lab_intel", "lab_ipa", "office_a", "office_e"})
+    {
+        const auto s =
+            realPair(std::string("furnished_") + plan, std::string("floorplans/") + plan + ".png",
+                     std::string("floorplans/") + plan + "_furnitures.png", kIdentity);
+        if (!s) GTEST_SKIP() << "no ../shared/data";
+        EXPECT_GE(double(s->matched) / double(s->matched + s->match.missing), 0.7) << plan;
+        EXPECT_EQ(s->correct, s->matched) << plan;
+    }
 }
 
 TEST(ConsistentMatching, HouseMaps)

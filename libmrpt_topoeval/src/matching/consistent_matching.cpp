@@ -503,7 +503,9 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     //    Then once more without the links (`geometric`): a vertex of a graph piece no group
     //    reaches (a hall's inner piece, cut off by its walls) is paired with any free map vertex
     //    the fit puts within its tolerance, when the pair is as similar as a small group must
-    //    be (min_small_group_similarity).
+    //    be (min_small_group_similarity). Then along the links again, from what that pass
+    //    placed: the rest of such a piece is linked to it (a room's junction whose edges a
+    //    table changed is less similar than a small group's pair, but next to one).
     std::vector<int> group_of_gt(n_gt, -1);
     for (std::size_t g = 0; g < out.cores.size(); ++g)
         for (const auto& [a, b] : out.cores[g]) group_of_gt[a] = int(g);
@@ -533,7 +535,7 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     }
     std::vector<int> all_map(static_cast<std::size_t>(n_map));
     std::iota(all_map.begin(), all_map.end(), 0);
-    for (const bool geometric : {false, true})
+    for (const bool geometric : {false, true, false})
         for (int round = 0; round < n_gt; ++round)
         {
             struct Proposal
