@@ -555,17 +555,25 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                     bool linked = false;
                     for (int x = 0; x < n_gt; ++x)
                         if (group_of_gt[x] == int(g)) near.emplace_back((pg(x) - pg(a)).norm(), x);
-                    std::sort(near.begin(), near.end());
                     // The pairs within growing_radius_m. In the pass without links, a vertex
                     // of a graph piece that holds no group's core (a room the plan's walls cut
                     // off) farther than that from all of a group's pairs but one is placed by
                     // the group's 3 nearest pairs, its tolerance grown with the distance. Not
                     // elsewhere: far from a group in a piece it holds, the map may be broken.
-                    std::size_t n_near = 0;
-                    while (n_near < near.size() && near[n_near].first <= p.growing_radius_m)
-                        ++n_near;
-                    if (geometric && n_near < 2 && !piece_has_core[piece_of_gt[a]]) n_near = 3;
-                    near.resize(std::min(near.size(), n_near));
+                    const auto within = std::partition(near.begin(), near.end(),
+                                                       [&](const auto& q)
+                                                       { return q.first <= p.growing_radius_m; });
+                    if (geometric && within - near.begin() < 2 && !piece_has_core[piece_of_gt[a]])
+                    {
+                        const std::size_t k = std::min<std::size_t>(3, near.size());
+                        std::partial_sort(near.begin(), near.begin() + k, near.end());
+                        near.resize(k);
+                    }
+                    else
+                    {
+                        near.erase(within, near.end());
+                        std::sort(near.begin(), near.end());
+                    }
                     if (near.size() < 2) continue;
                     if (geometric)
                         map_near = all_map;
