@@ -6,20 +6,13 @@
 #include <numeric>
 #include <tuple>
 
+#include "geometry/polygon.h"
 #include "graph/ring.h"
 
 namespace mrpt_topoeval::internal
 {
 namespace
 {
-
-double signedArea(const std::vector<Eigen::Vector2d>& path)
-{
-    double a = 0.0;
-    for (std::size_t i = 0, j = path.size() - 1; i < path.size(); j = i++)
-        a += path[j].x() * path[i].y() - path[i].x() * path[j].y();
-    return 0.5 * a;
-}
 
 // Point at arc length `dist` along a path, from its start or from its end.
 Eigen::Vector2d pointAlong(const std::vector<Eigen::Vector2d>& path, double dist, bool from_start)

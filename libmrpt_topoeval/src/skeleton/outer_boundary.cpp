@@ -7,6 +7,8 @@
 #include <map>
 #include <tuple>
 
+#include "geometry/polygon.h"
+
 namespace mrpt_topoeval::internal
 {
 namespace
@@ -87,10 +89,7 @@ std::vector<Eigen::Vector2d> longestBoundaryPolygon(
         // longer: a floor plan drawn on a black page and then rotated has an obstacle band along
         // the page's edge, and the black between page and building is one hole whose boundary
         // runs along both. The outer shape is never a hole.
-        double twice_area = 0.0;
-        for (std::size_t i = 0; i < poly.size(); ++i)
-            twice_area += cross(poly[i], poly[(i + 1) % poly.size()]);
-        if (twice_area > 0.0 && len > best_len)
+        if (signedArea(poly) > 0.0 && len > best_len)
         {
             best_len = len;
             best = std::move(poly);
