@@ -98,6 +98,25 @@ TEST(Horn, RecoversAKnownTransformFarFromTheOrigin)
     EXPECT_LT(mse, 1e-12);
 }
 
+TEST(Horn, AgreementPointIsThePivotOfABreak)
+{
+    // A map's part turned by 25 degrees about a pivot: the whole map's transform and the part's
+    // agree at the pivot (in the ground truth's frame) and nowhere else; a shift has no such
+    // point.
+    const Transform2D whole{3.0, -2.0, 40.0};
+    const Eigen::Vector2d pivot_gt(12.0, 7.5);
+    // part(m) = R(-25) (whole(m) - pivot) + pivot: the part, put back by a further turn.
+    const double t = -25.0 * M_PI / 180.0;
+    const Eigen::Rotation2Dd turn(t);
+    const Eigen::Vector2d at0 = turn * (whole.apply({0.0, 0.0}) - pivot_gt) + pivot_gt;
+    const Transform2D part{at0.x(), at0.y(), whole.yaw_deg - 25.0};
+    const auto p = internal::agreementPoint(whole, part);
+    ASSERT_TRUE(p.has_value());
+    EXPECT_NEAR(p->x(), pivot_gt.x(), 1e-9);
+    EXPECT_NEAR(p->y(), pivot_gt.y(), 1e-9);
+    EXPECT_FALSE(internal::agreementPoint(whole, Transform2D{5.0, 1.0, 40.0}).has_value());
+}
+
 TEST(QualityEvaluator, RigidlyMovedMap)
 {
     const auto campus = makeCampusMap();

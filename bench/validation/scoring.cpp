@@ -134,9 +134,13 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     }
     if (truth.part_of && truth.injected_breaks >= 0)
     {
-        s.parts_with_3_pairs = s.parts_with_5_pairs = s.parts_with_5_counterparts = 0;
+        s.parts_with_3_pairs = s.parts_with_5_pairs = s.parts_with_5_counterparts =
+            s.parts_with_3_counterparts = 0;
         for (const auto& [part, n] : counterparts_per_part)
+        {
             s.parts_with_5_counterparts += (part >= 0 && n >= 5) ? 1 : 0;
+            s.parts_with_3_counterparts += (part >= 0 && n >= 3) ? 1 : 0;
+        }
         for (const auto& [part, n] : true_per_part)
         {
             s.parts_with_3_pairs += (part >= 0 && n >= 3) ? 1 : 0;

@@ -58,6 +58,10 @@ struct CaseScore
      * parts that any matcher could make a 5-vertex group of (a break is measurable when every
      * part is one); -1 when not broken. */
     int parts_with_5_counterparts = -1;
+    /** Broken maps: parts holding at least 3 ground-truth vertices with a counterpart. A part
+     * with fewer has no rigid fit that any matcher could find (two pairs fit any turn): its
+     * break is not observable in the Topology Graphs; -1 when not broken. */
+    int parts_with_3_counterparts = -1;
     /** Largest |yaw error| of an accepted brokenness group against the part most of its
      * vertices belong to [deg]; NaN when not a broken case or no group. */
     double max_group_rotation_error_deg = 0.0;

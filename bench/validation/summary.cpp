@@ -94,6 +94,11 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
                 ++a.broken_measurable;
                 if (exact) ++a.broken_measurable_exact;
             }
+            if (s.parts_with_3_counterparts >= s.brokenness_injected + 1)
+            {
+                ++a.broken_observable;
+                if (exact) ++a.broken_observable_exact;
+            }
             if (std::isfinite(s.max_group_rotation_error_deg))
                 a.max_rotation_error_deg =
                     std::max(a.max_rotation_error_deg, s.max_group_rotation_error_deg);
@@ -235,7 +240,9 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
         if (a.name == "broken")
             o << "\nbroken: exactly right in " << a.broken_exact << " of " << a.broken << "; in "
               << a.broken_measurable_exact << " of the " << a.broken_measurable
-              << " whose every part holds 5 ground-truth vertices with a counterpart\n";
+              << " whose every part holds 5 ground-truth vertices with a counterpart; in "
+              << a.broken_observable_exact << " of the " << a.broken_observable
+              << " whose every part holds 3 (with fewer a part's break is not observable)\n";
     for (const auto& a : s.kinds)
         if (a.name == "crop")
             o << "\ncrop: mean |coverage - share of ground-truth vertices kept| = "

@@ -37,6 +37,9 @@ struct Aggregate
     /** Broken cases whose every part holds 5 ground-truth vertices with a counterpart (so a
      * 5-vertex group could be made in each), and of those the ones found exactly. */
     std::size_t broken_measurable = 0, broken_measurable_exact = 0;
+    /** Broken cases whose every part holds 3 (the fewest a rigid fit can be checked on), and
+     * of those the ones found exactly. */
+    std::size_t broken_observable = 0, broken_observable_exact = 0;
     double max_rotation_error_deg = 0.0;  //!< Over every group of every broken case.
     double mean_coverage = 0.0, max_coverage = 0.0, mean_quality = 0.0;
     double mean_coverage_error = 0.0;  //!< Crops: mean |coverage - share with counterpart|.

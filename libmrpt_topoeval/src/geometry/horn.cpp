@@ -53,5 +53,19 @@ Transform2D hornAlign(const std::vector<Eigen::Vector2d>& gt,
     }
     return t;
 }
+
+std::optional<Eigen::Vector2d> agreementPoint(const Transform2D& a, const Transform2D& b)
+{
+    // a(m) = b(m): (Ra - Rb) m = tb - ta. Ra - Rb is a rotation scaled by 2 sin(turn / 2),
+    // invertible unless the yaws are equal (a turn of 1e-6 degrees puts the point ~10^7 times
+    // the shift away, farther than any test of its distance).
+    const double ya = a.yaw_deg * M_PI / 180.0, yb = b.yaw_deg * M_PI / 180.0;
+    const double c = std::cos(ya) - std::cos(yb), s = std::sin(ya) - std::sin(yb);
+    const double det = c * c + s * s;
+    if (!(det > 1e-16)) return std::nullopt;
+    const Eigen::Vector2d rhs(b.x_m - a.x_m, b.y_m - a.y_m);
+    const Eigen::Vector2d m((c * rhs.x() + s * rhs.y()) / det, (-s * rhs.x() + c * rhs.y()) / det);
+    return a.apply(m);
+}
 }  // namespace internal
 }  // namespace mrpt_topoeval

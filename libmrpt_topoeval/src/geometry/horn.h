@@ -4,6 +4,7 @@
 #include <mrpt_topoeval/geometry/Transform2D.h>
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 namespace mrpt_topoeval::internal
@@ -14,5 +15,10 @@ namespace mrpt_topoeval::internal
  * error [m^2] through `mse`. Fewer than 2 points: identity on the centroids. */
 Transform2D hornAlign(const std::vector<Eigen::Vector2d>& gt,
                       const std::vector<Eigen::Vector2d>& map, double* mse = nullptr);
+
+/** The ground-truth point where two transforms (map to ground truth) place one map point alike:
+ * the fixed point of the turn between them, the pivot of a break. None when their yaws are
+ * equal (a shift has no such point). */
+std::optional<Eigen::Vector2d> agreementPoint(const Transform2D& a, const Transform2D& b);
 
 }  // namespace mrpt_topoeval::internal

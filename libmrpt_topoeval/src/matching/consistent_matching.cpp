@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <tuple>
@@ -305,6 +306,13 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                    ? p.min_part_group_vertices
                    : min_size;
     };
+    // Horn's fit of a set of candidates, map to ground truth.
+    auto fitOf = [&](const std::vector<int>& set, double* mse)
+    {
+        std::vector<Eigen::Vector2d> a, b;
+        for (int i : set) a.push_back(pg(cands[i].gt)), b.push_back(pm(cands[i].map));
+        return hornAlign(a, b, mse);
+    };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
     // biggest part linked in both graphs; then the size, extent, bridge and similarity rules.
@@ -342,16 +350,12 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             for (int j : group)
                 extent = std::max(extent, (pg(cands[i].gt) - pg(cands[j].gt)).norm());
         if (extent < p.min_group_extent_m) return false;
-        {
-            // One rigid part, as the paper's brokenness groups are (its SquaredErrorThreshold):
-            // a chance group keeps every pair within its own tolerance but spreads the errors
-            // to the limit (two column halls of different buildings: 0 of 17 pairs true).
-            std::vector<Eigen::Vector2d> a, b;
-            for (int i : group) a.push_back(pg(cands[i].gt)), b.push_back(pm(cands[i].map));
-            double mse = 0.0;
-            hornAlign(a, b, &mse);
-            if (mse > p.max_group_squared_error_m2) return false;
-        }
+        // One rigid part, as the paper's brokenness groups are (its SquaredErrorThreshold): a
+        // chance group keeps every pair within its own tolerance but spreads the errors to the
+        // limit (two column halls of different buildings: 0 of 17 pairs true).
+        double mse = 0.0;
+        const Transform2D fit = fitOf(group, &mse);
+        if (mse > p.max_group_squared_error_m2) return false;
         if (!out.cores.empty())
         {
             // A further part meets the accepted groups at its cut: where one of its
@@ -376,6 +380,31 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                                                                 cands[i].uncertainty_m +
                                                                 p.part_bridge_ratio * dg;
                 }
+            // A big group's neighbour pairs may all lie far from the pivot of its turn, where
+            // the turn changes their distances by more than part_bridge_ratio (a cut across a
+            // whole building, turned about its one end). Where the robot crossed the break
+            // both fits place the map alike: that pivot lies next to both groups.
+            if (neighbour && !bridge && int(group.size()) >= min_size)
+            {
+                auto nearest = [&](const Eigen::Vector2d& c, const std::vector<int>& gts)
+                {
+                    double d = std::numeric_limits<double>::infinity();
+                    for (int g : gts) d = std::min(d, (pg(g) - c).norm());
+                    return d;
+                };
+                std::vector<int> own;
+                for (int i : group) own.push_back(cands[i].gt);
+                for (const auto& core : out.cores)
+                {
+                    std::vector<int> core_gt;
+                    std::vector<Eigen::Vector2d> a, b;
+                    for (const auto& [g, m] : core)
+                        core_gt.push_back(g), a.push_back(pg(g)), b.push_back(pm(m));
+                    const auto pivot = agreementPoint(fit, hornAlign(a, b));
+                    bridge = bridge || (pivot && nearest(*pivot, own) <= p.part_pivot_distance_m &&
+                                        nearest(*pivot, core_gt) <= p.part_pivot_distance_m);
+                }
+            }
             if (int(group.size()) < min_size ? !bridge : (neighbour && !bridge)) return false;
         }
         if (int(group.size()) < p.min_group_vertices)

@@ -128,6 +128,14 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * degrees at the cut changes it by about half). Rejects chance groups that sit next to an
      * accepted group in the ground truth but elsewhere in the map [ratio]. */
     double part_bridge_ratio = 0.5;
+    /** A further group of at least min_group_vertices pairs whose neighbour pairs all changed
+     * their distance (the turn moved them: they lie far from its pivot) still meets the
+     * accepted groups when the pivot of the turn between its fit and an accepted group's fit
+     * (where both place the map alike: where the robot crossed the break) lies within this of
+     * a ground-truth vertex of each. A chance group's turn has its pivot anywhere, a lattice's
+     * shift has none. 8 m: half the growing radius and more; 8 to 15 m give the same corpus
+     * results, 6 m misses a part (doc/matching.md) [m]. */
+    double part_pivot_distance_m = 8.0;
     /** Growing: an unmatched vertex near a group is paired where the rigid fit of the group's
      * pairs within this radius of it predicts its partner [m]; */
     double growing_radius_m = 12.0;
