@@ -8,6 +8,7 @@
 
 #include "buildings.h"
 #include "slam_sim.h"
+#include "synthetic_maps.h"
 
 namespace mrpt_topoeval::validation
 {
@@ -135,6 +136,39 @@ Corpus buildCorpus(const CorpusOptions& opts)
         if (other == i && hi - lo > 1) other = lo + (i - lo + 1) % (hi - lo);
         addVariants(corpus, i, other, generated, opts.quick, opts.seed);
     }
+    // Near-twins ("twin"): the unit tests' campus (tests/support, makeCampusMap) with three
+    // seeds, each against the next. One style, one corridor width, one room rule; only the
+    // corridors' spacing (7.5-14 m) and the rooms differ. Different buildings that share a
+    // building code: the hard case for "never trust a wrong pair". Ground truths of their own,
+    // with no other variants (their figures stay out of the other kinds').
+    if (!opts.quick)
+    {
+        const std::size_t first = corpus.ground_truths.size();
+        for (std::uint32_t k = 1; k <= 3; ++k)
+        {
+            GroundTruthMap g;
+            g.name = "campus_" + std::to_string(opts.seed * 1000 + k);
+            g.family = "campus";
+            g.file = "(generated: tests/support makeCampusMap)";
+            g.generated = true;
+            g.grid = testing::makeCampusMap(opts.seed * 1000 + k);
+            corpus.ground_truths.push_back(std::move(g));
+        }
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+            const GroundTruthMap& g = corpus.ground_truths[first + k];
+            CaseSpec c;
+            c.id = g.name + "/twin";
+            c.building = g.name;
+            c.family = g.family;
+            c.source = "generated";
+            c.kind = "twin";
+            c.seed = caseSeed(opts.seed, c.id);
+            c.gt = first + k;
+            c.other = first + (k + 1) % 3;
+            corpus.cases.push_back(c);
+        }
+    }
     // Real pairs (quick: four small ones, one of each kind of truth but keypoints).
     const std::vector<std::string> quick_pairs = {"gh25_vs_icp_slam", "house_6ccdcaa_vs_2333d24",
                                                   "gazebo_gmapping",
@@ -196,7 +230,7 @@ Variant makeCaseMap(const Corpus& corpus, const CaseSpec& c)
         v.truth.wall_tolerance_m = 0.15;
         return v;
     }
-    if (c.kind == "different")
+    if (c.kind == "different" || c.kind == "twin")
     {
         const Rigid2D r = randomRigid(c.seed);
         Variant v = makeRigid(corpus.ground_truths[c.other].grid, r.yaw_rad, r.t_m);

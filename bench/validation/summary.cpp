@@ -20,11 +20,14 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
  * degrees") [deg]. */
 constexpr double kExactRotationErrorDeg = 3.0;
 
+/** A map of another building ("different", "twin"): no truth, every pair is false. */
+bool otherBuilding(const std::string& kind) { return kind == "different" || kind == "twin"; }
+
 const std::vector<std::string>& kindOrder()
 {
-    static const std::vector<std::string> k = {"identical", "rigid",  "resample", "speckle",
-                                               "gaps",      "ragged", "crop",     "broken",
-                                               "furniture", "slam",   "different"};
+    static const std::vector<std::string> k = {"identical", "rigid",  "resample",  "speckle",
+                                               "gaps",      "ragged", "crop",      "broken",
+                                               "furniture", "slam",   "different", "twin"};
     return k;
 }
 
@@ -76,11 +79,12 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
             ++a.errors;
             continue;
         }
-        if (!r->spec.kind.empty() && r->spec.kind != "different")
+        if (!r->spec.kind.empty() && !otherBuilding(r->spec.kind))
             a.truth_min = std::min(a.truth_min, r->truth_check.share());
         const CaseScore& s = r->score;
         a.matched += s.matched;
         a.true_pairs += s.true_pairs;
+        if (s.matched == s.true_pairs) ++a.clean;
         a.counterparts += std::max(s.gt_with_counterpart, s.true_pairs);
         if (s.brokenness_injected >= 0 && r->spec.kind == "broken")
         {
@@ -161,9 +165,9 @@ Summary summarize(const std::vector<CaseResult>& results)
             real.push_back(&r);
             continue;
         }
-        if (r.error.empty() && r.spec.kind != "different" && r.truth_check.share() < 0.95)
+        if (r.error.empty() && !otherBuilding(r.spec.kind) && r.truth_check.share() < 0.95)
             ++s.truth_failures;
-        if (r.spec.kind == "different") continue;
+        if (otherBuilding(r.spec.kind)) continue;
         pooled.push_back(&r);
         if (r.spec.source == "generated") pooled_gen.push_back(&r);
     }
@@ -304,6 +308,8 @@ std::vector<std::string> checkFloors(const Summary& s, const std::string& text,
             v = a->recall();
         else if (metric == "brokenness_exact")
             v = a->broken ? static_cast<double>(a->broken_exact) / a->broken : kNaN;
+        else if (metric == "clean_cases")
+            v = static_cast<double>(a->clean) / static_cast<double>(a->cases);
         else if (metric == "truth_min")
             v = a->truth_min;
         else

@@ -31,6 +31,7 @@ struct Aggregate
     std::size_t cases = 0, errors = 0;
     double truth_min = 1.0;  //!< Smallest truth-check share.
     std::size_t matched = 0, true_pairs = 0, counterparts = 0;
+    std::size_t clean = 0;  //!< Cases scored without an error and without a false pair.
     double precision() const;
     double recall() const;
     std::size_t broken = 0, broken_exact = 0;  //!< Cases with injected breaks, found exactly.

@@ -129,6 +129,19 @@ private:
     std::vector<int> m_best;
 };
 
+/** log10 of the number of false alarms (Desolneux, Moisan and Morel's a contrario test, as in
+ * Moisan and Stival's AC-RANSAC) of a clique of s among n candidates whose consistency graph
+ * has this density: the number of s-subsets times the chance that all their s(s-1)/2 distances
+ * agree, each with the chance of one agreement. The density counts the true agreements too, so
+ * it overestimates chance and the test errs towards refusing. */
+double log10FalseAlarms(double n, double s, double density)
+{
+    if (!(density > 0.0) || s < 2.0 || n < s) return -std::numeric_limits<double>::infinity();
+    const double log_subsets =
+        std::lgamma(n + 1.0) - std::lgamma(s + 1.0) - std::lgamma(n - s + 1.0);
+    return (log_subsets + 0.5 * s * (s - 1.0) * std::log(density)) / std::log(10.0);
+}
+
 /** Vertices within `hops` view edges of v (v included). */
 std::vector<int> nearInGraph(const MatchView& view, int v, int hops)
 {
@@ -512,6 +525,22 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             double mean_s = 0.0;
             for (int i : clique) mean_s += S(cands[i].gt, cands[i].map);
             ok = !clique.empty() && mean_s / double(clique.size()) >= p.min_small_group_similarity;
+        }
+        if (ok && int(clique.size()) >= p.min_group_vertices)
+        {
+            // Significance: the first group decides that the maps show one place. Among a few
+            // hundred candidates a group of 5 consistent pairs happens by chance (two buildings
+            // of one building code, a hall's lattice: the corpus's false first groups were all
+            // 5 pairs); how big a group must be grows with the candidates. A smaller group
+            // (a small graph's) has the similarity rule instead.
+            std::size_t edges = 0;
+            for (std::size_t x = 0; x < pool.size(); ++x)
+                for (std::size_t y = x + 1; y < pool.size(); ++y)
+                    edges += adjacent[std::size_t(pool[x]) * n + pool[y]];
+            const double m = double(pool.size());
+            const double density = m > 1.0 ? double(edges) / (0.5 * m * (m - 1.0)) : 0.0;
+            ok = log10FalseAlarms(m, double(clique.size()), density) <=
+                 std::log10(p.max_false_alarms);
         }
         if (ok) accept(clique);
     }

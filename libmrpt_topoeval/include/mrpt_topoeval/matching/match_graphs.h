@@ -111,6 +111,14 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
     /** Branch-and-bound steps per clique search; when spent the best clique so far is taken
      * (bounds the time on dense consistency graphs; deterministic) [1]. */
     int max_clique_steps = 200000;
+    /** The first group (the one that decides that the maps show one place) of at least
+     * min_group_vertices pairs must be significant: the expected number of groups as big that
+     * chance alone would make among the candidates (the number of false alarms of Desolneux,
+     * Moisan and Morel's a contrario test: subsets times the consistency graph's density to the
+     * power of the group's pair distances) at most this. 1 is the a contrario default (less
+     * than one false detection expected); the corpus's false first groups between buildings of
+     * one style had 0.7-9 (doc/matching.md) [expected count]. */
+    double max_false_alarms = 1.0;
     /** A further group (another part of a broken map) is the best consensus of the candidates
      * still free: the transform of two linked, consistent pairs at least this far apart in the
      * ground truth, and the pairs it puts in place (near a break a clique mixes two parts, and
