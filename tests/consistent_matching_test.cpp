@@ -320,6 +320,26 @@ TEST(ConsistentMatching, DifferentBuildingsShareLittle)
     }
 }
 
+TEST(ConsistentMatching, AnInsignificantFirstGroupIsRefusedAndSaysSo)
+{
+    // Two campuses of one building code (seeds 1 and 4): their biggest consistent group is 5
+    // chance pairs among ~640 candidates, where chance alone is expected to make 1.7 groups as
+    // big (a contrario, max_false_alarms = 1). Refused, nothing is matched, and the message says
+    // why; without the test the chance group and its further groups made false pairs.
+    const Parameters tp = tunedParameters();
+    const COccupancyGridMap2D a = makeCampusMap(1), b = makeCampusMap(4);
+    const TopologyGraph ga = buildTopologyGraph(a, tp.graph), gb = buildTopologyGraph(b, tp.graph);
+    const SimilarityMatrix S = attributeSimilarity(ga, gb, tp.similarity);
+    const GraphMatch m = matchGraphs(ga, gb, S, tp.matcher);
+    EXPECT_TRUE(m.pairs.empty());
+    ASSERT_FALSE(m.messages.empty());
+    EXPECT_NE(m.messages.front().find("is not significant among"), std::string::npos)
+        << m.messages.front();
+    GraphMatcherParameters trusting = tp.matcher;
+    trusting.max_false_alarms = 1e300;
+    EXPECT_FALSE(matchGraphs(ga, gb, S, trusting).pairs.empty());
+}
+
 TEST(ConsistentMatching, ARoomThatIsAGraphPieceOfItsOwnIsMatched)
 {
     // A corridor with rooms at its west end, and 3 m east of its dead end, behind the wall, a

@@ -539,8 +539,14 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                     edges += adjacent[std::size_t(pool[x]) * n + pool[y]];
             const double m = double(pool.size());
             const double density = m > 1.0 ? double(edges) / (0.5 * m * (m - 1.0)) : 0.0;
-            ok = log10FalseAlarms(m, double(clique.size()), density) <=
-                 std::log10(p.max_false_alarms);
+            const double log_nfa = log10FalseAlarms(m, double(clique.size()), density);
+            ok = log_nfa <= std::log10(p.max_false_alarms);
+            if (!ok && clique.size() > out.refused_size)
+            {
+                out.refused_size = clique.size();
+                out.refused_false_alarms = std::pow(10.0, log_nfa);
+                out.refused_candidates = pool.size();
+            }
         }
         if (ok) accept(clique);
     }
