@@ -175,9 +175,9 @@ Summary summarize(const std::vector<CaseResult>& results)
     s.pooled_generated = aggregate("pooled generated", pooled_gen);
     s.real = aggregate("real pairs", real);
     // Spearman per family and ladder, pooled over the family's buildings.
-    std::map<std::pair<std::string, std::string>,
-             std::pair<std::vector<double>, std::vector<double>>>
-        ladders;
+    using Points = std::pair<std::vector<double>, std::vector<double>>;
+    std::map<std::pair<std::string, std::string>, Points> ladders;
+    std::map<std::pair<std::string, std::string>, std::map<std::string, Points>> per_building;
     for (const auto& r : results)
     {
         if (!r.error.empty() || r.spec.severity < 0) continue;
@@ -195,6 +195,9 @@ Summary summarize(const std::vector<CaseResult>& results)
                                         : static_cast<double>(r.spec.severity);
             pts.first.push_back(-severity);
             pts.second.push_back(r.score.quality);
+            auto& own = per_building[{r.spec.family, l}][r.spec.building];
+            own.first.push_back(-severity);
+            own.second.push_back(r.score.quality);
         }
     }
     for (const auto& [key, pts] : ladders)
@@ -205,6 +208,15 @@ Summary summarize(const std::vector<CaseResult>& results)
         f.ladder = key.second;
         f.points = pts.first.size();
         f.spearman = spearman(pts.first, pts.second);
+        double sum = 0.0;
+        for (const auto& [building, own] : per_building[key])
+        {
+            const double rho = spearman(own.first, own.second);
+            if (!std::isfinite(rho)) continue;
+            sum += rho;
+            ++f.buildings;
+        }
+        f.spearman_per_building = f.buildings ? sum / double(f.buildings) : kNaN;
         s.ladders.push_back(f);
     }
     return s;
@@ -232,12 +244,14 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
     for (const auto& a : s.kinds) row(a);
     row(s.pooled_generated);
     row(s.pooled);
-    o << "\nfamily             ladder  points  spearman(severity, quality)\n";
+    o << "\nfamily             ladder  points  spearman(severity, quality)  per building (mean "
+         "of)\n";
     for (const auto& f : s.ladders)
     {
         char buf[200];
-        std::snprintf(buf, sizeof buf, "%-18s %-7s %6zu  %s\n", f.family.c_str(), f.ladder.c_str(),
-                      f.points, num(f.spearman).c_str());
+        std::snprintf(buf, sizeof buf, "%-18s %-7s %6zu  %-28s %s (%zu)\n", f.family.c_str(),
+                      f.ladder.c_str(), f.points, num(f.spearman).c_str(),
+                      num(f.spearman_per_building).c_str(), f.buildings);
         o << buf;
     }
     for (const auto& a : s.kinds)

@@ -60,6 +60,12 @@ struct FamilyLadder
      * ladder is the number of breaks; on the slam ladder the map's measured distortion (the
      * noise level does not order the maps' real error: ICP undoes much of it). */
     double spearman = 0.0;
+    /** The same within each building of the family (its own ladder, 4 points), averaged over
+     * the buildings: without the differences between buildings (one building's coverage is
+     * lower at every level), which the pooled figure mixes in. NaN when no building has 3
+     * points with a spread. */
+    double spearman_per_building = 0.0;
+    std::size_t buildings = 0;  //!< Buildings in that mean.
 };
 
 struct Summary

@@ -221,6 +221,8 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("ladder").value(f.ladder);
         j.key("points").value(static_cast<std::uint64_t>(f.points));
         j.key("spearman").value(f.spearman, 4);
+        j.key("spearman_per_building").value(f.spearman_per_building, 4);
+        j.key("buildings").value(static_cast<std::uint64_t>(f.buildings));
         j.endObject();
     }
     j.endArray();
