@@ -174,7 +174,7 @@ Summary summarize(const std::vector<CaseResult>& results)
     s.pooled = aggregate("pooled", pooled);
     s.pooled_generated = aggregate("pooled generated", pooled_gen);
     s.real = aggregate("real pairs", real);
-    // Spearman per family and ladder, pooled over the family's buildings.
+    // Spearman per family and ladder, pooled over the family's buildings and within each.
     using Points = std::pair<std::vector<double>, std::vector<double>>;
     std::map<std::pair<std::string, std::string>, Points> ladders;
     std::map<std::pair<std::string, std::string>, std::map<std::string, Points>> per_building;

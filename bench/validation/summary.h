@@ -70,9 +70,9 @@ struct FamilyLadder
 
 struct Summary
 {
-    std::vector<Aggregate> kinds;       //!< Corpus cases (not real pairs), per kind.
-    Aggregate pooled;                   //!< Every corpus case except "different".
-    Aggregate pooled_generated;         //!< ... of generated buildings only.
+    std::vector<Aggregate> kinds;  //!< Corpus cases (not real pairs), per kind.
+    Aggregate pooled;              //!< Every corpus case but other buildings (different, twin).
+    Aggregate pooled_generated;    //!< ... of generated buildings only.
     std::vector<FamilyLadder> ladders;  //!< Per family and ladder.
     Aggregate real;                     //!< The real pairs, pooled.
     std::size_t truth_failures = 0;     //!< Corpus cases under 95 % in the truth check.

@@ -141,8 +141,8 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * accepted groups when the pivot of the turn between its fit and an accepted group's fit
      * (where both place the map alike: where the robot crossed the break) lies within this of
      * a ground-truth vertex of each. A chance group's turn has its pivot anywhere, a lattice's
-     * shift has none. 8 m: half the growing radius and more; 8 to 15 m give the same corpus
-     * results, 6 m misses a part (doc/matching.md) [m]. */
+     * shift has none. 8 m: the low end of the range that gives the same corpus results (8 to
+     * 15 m; 6 m misses a part, doc/matching.md) [m]. */
     double part_pivot_distance_m = 8.0;
     /** Growing: an unmatched vertex near a group is paired where the rigid fit of the group's
      * pairs within this radius of it predicts its partner [m]; */
