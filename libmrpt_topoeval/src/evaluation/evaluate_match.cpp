@@ -330,6 +330,28 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                                              p.brokenness_min_vertices;
                                   }),
                    b.groups.end());
+    // Ours: one wrong pair must not turn a part's fit. A pair a few metres off joins a group
+    // when the compromise fit keeps the mean squared error within the threshold; each group's
+    // member that the fit of the others places worst leaves while that error exceeds
+    // brokenness_outlier_ratio x the threshold's root (leave-one-out, as robust registration
+    // checks a correspondence against the rest), down to brokenness_min_vertices.
+    const double outlier2 =
+        p.brokenness_outlier_ratio * p.brokenness_outlier_ratio * p.brokenness_max_squared_error_m2;
+    if (p.brokenness_outlier_ratio > 0.0)
+        for (auto& g : b.groups)
+            while (static_cast<int>(g.gt_vertices.size()) > p.brokenness_min_vertices)
+            {
+                std::vector<Eigen::Vector2d> pg, pm;
+                for (int v : g.gt_vertices)
+                {
+                    pg.push_back(gt.vertices[v].position_m);
+                    pm.push_back(map.vertices[partner[v]].position_m);
+                }
+                const std::vector<double> e2 = internal::leaveOneOutSquaredErrors(pg, pm);
+                const auto worst = std::max_element(e2.begin(), e2.end());
+                if (*worst <= outlier2) break;
+                g.gt_vertices.erase(g.gt_vertices.begin() + (worst - e2.begin()));
+            }
     for (auto& g : b.groups) g.transform = fitOf(g.gt_vertices, &g.squared_error_m2);
     // Small parts (ours): a part of 3-4 matched vertices is too small for the paper's rule, but
     // when its own fit is good and every counted group places its map vertices clearly

@@ -1,6 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include "geometry/horn.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 namespace mrpt_topoeval
@@ -52,6 +53,40 @@ Transform2D hornAlign(const std::vector<Eigen::Vector2d>& gt,
         *mse = sum / double(n);
     }
     return t;
+}
+
+std::vector<double> leaveOneOutSquaredErrors(const std::vector<Eigen::Vector2d>& gt,
+                                             const std::vector<Eigen::Vector2d>& map)
+{
+    const std::size_t n = gt.size();
+    std::vector<double> out(n, 0.0);
+    if (n < 3) return out;
+    // About the centroids, so the sums stay well conditioned far from the origin.
+    Eigen::Vector2d cg = Eigen::Vector2d::Zero(), cm = Eigen::Vector2d::Zero();
+    for (std::size_t i = 0; i < n; ++i) cg += gt[i], cm += map[i];
+    cg /= double(n);
+    cm /= double(n);
+    auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+    { return a.x() * b.y() - a.y() * b.x(); };
+    double dot_sum = 0.0, cross_sum = 0.0;  // sum of m.g and m x g
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        dot_sum += (map[i] - cm).dot(gt[i] - cg);
+        cross_sum += cross(map[i] - cm, gt[i] - cg);
+    }
+    const double rest = double(n - 1);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        const Eigen::Vector2d g = gt[k] - cg, m = map[k] - cm;
+        // The others' centroids (the sums of all are zero) and centred sums, as hornAlign().
+        const Eigen::Vector2d g_bar = -g / rest, m_bar = -m / rest;
+        const double sc = dot_sum - m.dot(g) - rest * m_bar.dot(g_bar);
+        const double ss = cross_sum - cross(m, g) - rest * cross(m_bar, g_bar);
+        const double theta = (sc != 0.0 || ss != 0.0) ? std::atan2(ss, sc) : 0.0;
+        const Eigen::Rotation2Dd R(theta);
+        out[k] = (g - (R * (m - m_bar) + g_bar)).squaredNorm();
+    }
+    return out;
 }
 
 std::optional<Eigen::Vector2d> agreementPoint(const Transform2D& a, const Transform2D& b)

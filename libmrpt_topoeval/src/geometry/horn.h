@@ -16,6 +16,12 @@ namespace mrpt_topoeval::internal
 Transform2D hornAlign(const std::vector<Eigen::Vector2d>& gt,
                       const std::vector<Eigen::Vector2d>& map, double* mse = nullptr);
 
+/** For each pair k, the squared distance from gt[k] to map[k] placed by Horn's fit of all the
+ * other pairs (leave-one-out), in O(n) for all: the fit depends on the points through sums
+ * that one pair changes by its own term. Fewer than 3 pairs: zeros. */
+std::vector<double> leaveOneOutSquaredErrors(const std::vector<Eigen::Vector2d>& gt,
+                                             const std::vector<Eigen::Vector2d>& map);
+
 /** The ground-truth point where two transforms (map to ground truth) place one map point alike:
  * the fixed point of the turn between them, the pivot of a break. None when their yaws are
  * equal (a shift has no such point). */

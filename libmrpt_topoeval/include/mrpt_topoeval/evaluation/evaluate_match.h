@@ -32,6 +32,13 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     int brokenness_min_part_vertices = 3;
     /** See brokenness_min_part_vertices [m^2]. */
     double brokenness_part_min_gap_m2 = 1.0;
+    /** One wrong pair must not turn a part's fit: a group member that the fit of the group's
+     * other members places farther than this x sqrt(brokenness_max_squared_error_m2) from its
+     * ground-truth vertex leaves the group (the worst first, down to brokenness_min_vertices).
+     * A pair 2.6 m off can join a group of 6 by turning its fit 3.9 degrees while the mean
+     * squared error stays within the threshold. 1.5 and 2 give the same corpus results, 2.5
+     * keeps one such pair (doc/quality.md). 0 = the paper's groups [ratio]. */
+    double brokenness_outlier_ratio = 2.0;
     /** A pair's position error up to this share of its vertices' clearance (the larger of the
      * two) is vertex jitter, not map error: a vertex in a room sits on the medial axis, which
      * slides with furniture, noise and resolution by a fraction of the room's half width.
