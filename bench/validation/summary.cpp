@@ -175,8 +175,9 @@ Summary summarize(const std::vector<CaseResult>& results)
     s.pooled_generated = aggregate("pooled generated", pooled_gen);
     s.real = aggregate("real pairs", real);
     // Spearman per family and ladder, pooled over the family's buildings and within each.
+    // Points of each building's ladder; the pooled ladder is their union (ranks do not depend on
+    // the order of the points).
     using Points = std::pair<std::vector<double>, std::vector<double>>;
-    std::map<std::pair<std::string, std::string>, Points> ladders;
     std::map<std::pair<std::string, std::string>, std::map<std::string, Points>> per_building;
     for (const auto& r : results)
     {
@@ -189,19 +190,22 @@ Summary summarize(const std::vector<CaseResult>& results)
         for (const auto& l : which)
         {
             if (l == "slam" && r.spec.source != "generated") continue;
-            auto& pts = ladders[{r.spec.family, l}];
             const double severity = l == "slam"
                                         ? (std::isfinite(r.distortion_m) ? r.distortion_m : 0.0)
                                         : static_cast<double>(r.spec.severity);
-            pts.first.push_back(-severity);
-            pts.second.push_back(r.score.quality);
             auto& own = per_building[{r.spec.family, l}][r.spec.building];
             own.first.push_back(-severity);
             own.second.push_back(r.score.quality);
         }
     }
-    for (const auto& [key, pts] : ladders)
+    for (const auto& [key, buildings] : per_building)
     {
+        Points pts;
+        for (const auto& [building, own] : buildings)
+        {
+            pts.first.insert(pts.first.end(), own.first.begin(), own.first.end());
+            pts.second.insert(pts.second.end(), own.second.begin(), own.second.end());
+        }
         if (pts.first.size() < 3) continue;
         FamilyLadder f;
         f.family = key.first;
@@ -209,7 +213,7 @@ Summary summarize(const std::vector<CaseResult>& results)
         f.points = pts.first.size();
         f.spearman = spearman(pts.first, pts.second);
         double sum = 0.0;
-        for (const auto& [building, own] : per_building[key])
+        for (const auto& [building, own] : buildings)
         {
             const double rho = spearman(own.first, own.second);
             if (!std::isfinite(rho)) continue;

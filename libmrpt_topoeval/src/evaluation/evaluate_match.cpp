@@ -243,14 +243,20 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     // their vertices in the same places (mean squared difference of T_i(q) and T_j(q) over
     // both groups' map vertices within the threshold) are one part, split only by vertex noise
     // or by unmatched vertices between them: merge them.
-    auto fitOf = [&](const std::vector<int>& vs, double* mse)
+    // The positions of `vs` and of their partners.
+    auto pointsOf = [&](const std::vector<int>& vs)
     {
-        std::vector<Eigen::Vector2d> pg, pm;
+        std::pair<std::vector<Eigen::Vector2d>, std::vector<Eigen::Vector2d>> pts;
         for (int v : vs)
         {
-            pg.push_back(gt.vertices[v].position_m);
-            pm.push_back(map.vertices[partner[v]].position_m);
+            pts.first.push_back(gt.vertices[v].position_m);
+            pts.second.push_back(map.vertices[partner[v]].position_m);
         }
+        return pts;
+    };
+    auto fitOf = [&](const std::vector<int>& vs, double* mse)
+    {
+        const auto [pg, pm] = pointsOf(vs);
         return internal::hornAlign(pg, pm, mse);
     };
     // Sum over `vs`' map vertices q of |T_x(q) - T_y(q)|^2: how differently two transforms place
@@ -341,12 +347,7 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
         for (auto& g : b.groups)
             while (static_cast<int>(g.gt_vertices.size()) > p.brokenness_min_vertices)
             {
-                std::vector<Eigen::Vector2d> pg, pm;
-                for (int v : g.gt_vertices)
-                {
-                    pg.push_back(gt.vertices[v].position_m);
-                    pm.push_back(map.vertices[partner[v]].position_m);
-                }
+                const auto [pg, pm] = pointsOf(g.gt_vertices);
                 const std::vector<double> e2 = internal::leaveOneOutSquaredErrors(pg, pm);
                 const auto worst = std::max_element(e2.begin(), e2.end());
                 if (*worst <= outlier2) break;

@@ -49,8 +49,11 @@ public:
         m_steps = 0;
         // Highest consistency-graph degree first (MCQ's initial order), stable for ties.
         std::vector<int> deg(m_n, 0);
+        m_edges = 0;
         for (int v : vertices)
             for (int u : vertices) deg[v] += adj(u, v);
+        for (int v : vertices) m_edges += std::size_t(deg[v]);
+        m_edges /= 2;
         std::stable_sort(vertices.begin(), vertices.end(),
                          [&](int a, int b) { return deg[a] > deg[b]; });
         std::vector<int> order, colour;
@@ -61,6 +64,8 @@ public:
     }
     /** Steps spent by the last run(). */
     std::size_t steps() const { return m_steps; }
+    /** Edges among the last run()'s vertices (the consistency graph's density). */
+    std::size_t edges() const { return m_edges; }
 
 private:
     bool adj(int a, int b) const { return m_adj[std::size_t(a) * m_n + b] != 0; }
@@ -126,6 +131,7 @@ private:
     int m_n;
     std::size_t m_budget;
     std::size_t m_steps = 0;
+    std::size_t m_edges = 0;
     std::vector<int> m_best;
 };
 
@@ -326,6 +332,8 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
         for (int i : set) a.push_back(pg(cands[i].gt)), b.push_back(pm(cands[i].map));
         return hornAlign(a, b, mse);
     };
+    // Each accepted group's fit, made once in accept() (settle() asks for it on every try).
+    std::vector<Transform2D> core_fits;
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
     // biggest part linked in both graphs; then the size, extent, bridge and similarity rules.
@@ -397,26 +405,17 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             // the turn changes their distances by more than part_bridge_ratio (a cut across a
             // whole building, turned about its one end). Where the robot crossed the break
             // both fits place the map alike: that pivot lies next to both groups.
-            if (neighbour && !bridge && int(group.size()) >= min_size)
+            for (std::size_t k = 0;
+                 k < out.cores.size() && neighbour && !bridge && int(group.size()) >= min_size; ++k)
             {
-                auto nearest = [&](const Eigen::Vector2d& c, const std::vector<int>& gts)
-                {
-                    double d = std::numeric_limits<double>::infinity();
-                    for (int g : gts) d = std::min(d, (pg(g) - c).norm());
-                    return d;
-                };
-                std::vector<int> own;
-                for (int i : group) own.push_back(cands[i].gt);
-                for (const auto& core : out.cores)
-                {
-                    std::vector<int> core_gt;
-                    std::vector<Eigen::Vector2d> a, b;
-                    for (const auto& [g, m] : core)
-                        core_gt.push_back(g), a.push_back(pg(g)), b.push_back(pm(m));
-                    const auto pivot = agreementPoint(fit, hornAlign(a, b));
-                    bridge = bridge || (pivot && nearest(*pivot, own) <= p.part_pivot_distance_m &&
-                                        nearest(*pivot, core_gt) <= p.part_pivot_distance_m);
-                }
+                const auto pivot = agreementPoint(fit, core_fits[k]);
+                if (!pivot) continue;
+                auto near = [&](int g)
+                { return (pg(g) - *pivot).norm() <= p.part_pivot_distance_m; };
+                bridge = std::any_of(group.begin(), group.end(),
+                                     [&](int i) { return near(cands[i].gt); }) &&
+                         std::any_of(out.cores[k].begin(), out.cores[k].end(),
+                                     [&](const auto& pair) { return near(pair.first); });
             }
             if (int(group.size()) < min_size ? !bridge : (neighbour && !bridge)) return false;
         }
@@ -495,6 +494,7 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             ctx.map_to_gt[cands[i].map] = cands[i].gt;
         }
         out.cores.push_back(std::move(core));
+        core_fits.push_back(fitOf(group, nullptr));
         buildCandidates();
     };
     // 3. Groups. The first: the maximum clique of the free candidates, settled; a clique that
@@ -533,12 +533,8 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             // of one building code, a hall's lattice: the corpus's false first groups were all
             // 5 pairs); how big a group must be grows with the candidates. A smaller group
             // (a small graph's) has the similarity rule instead.
-            std::size_t edges = 0;
-            for (std::size_t x = 0; x < pool.size(); ++x)
-                for (std::size_t y = x + 1; y < pool.size(); ++y)
-                    edges += adjacent[std::size_t(pool[x]) * n + pool[y]];
             const double m = double(pool.size());
-            const double density = m > 1.0 ? double(edges) / (0.5 * m * (m - 1.0)) : 0.0;
+            const double density = m > 1.0 ? double(search.edges()) / (0.5 * m * (m - 1.0)) : 0.0;
             const double log_nfa = log10FalseAlarms(m, double(clique.size()), density);
             ok = log_nfa <= std::log10(p.max_false_alarms);
             if (!ok && clique.size() > out.refused_size)

@@ -97,26 +97,27 @@ void matchConsistent(const TopologyGraph& ground_truth, const TopologyGraph& map
     std::sort(match.pairs.begin(), match.pairs.end(),
               [](const VertexPair& x, const VertexPair& y)
               { return x.ground_truth < y.ground_truth; });
-    if (found.cores.empty() && found.refused_size > 0)
+    if (!found.cores.empty()) return;
+    const std::string graphs = " candidate pairs (graphs of " + std::to_string(ctx.gt.numActive()) +
+                               " and " + std::to_string(ctx.map.numActive()) +
+                               " matchable vertices): ";
+    if (found.refused_size > 0)
     {
         std::ostringstream nfa;
         nfa << std::setprecision(2) << found.refused_false_alarms;
         match.messages.push_back(
             "the biggest group of geometrically consistent pairs (" +
             std::to_string(found.refused_size) + ") is not significant among " +
-            std::to_string(found.refused_candidates) + " candidate pairs (graphs of " +
-            std::to_string(ctx.gt.numActive()) + " and " + std::to_string(ctx.map.numActive()) +
-            " matchable vertices): chance alone is expected to make " + nfa.str() +
+            std::to_string(found.refused_candidates) + graphs +
+            "chance alone is expected to make " + nfa.str() +
             " groups as big, more than [GraphMatcher] max_false_alarms allows; the maps share "
             "too little structure to be matched");
     }
-    else if (found.cores.empty())
-        match.messages.push_back(
-            "no group of at least " + std::to_string(found.min_group_size) +
-            " geometrically consistent pairs was found among " + std::to_string(found.candidates) +
-            " candidate pairs (graphs of " + std::to_string(ctx.gt.numActive()) + " and " +
-            std::to_string(ctx.map.numActive()) +
-            " matchable vertices): the maps share no structure the matcher trusts");
+    else
+        match.messages.push_back("no group of at least " + std::to_string(found.min_group_size) +
+                                 " geometrically consistent pairs was found among " +
+                                 std::to_string(found.candidates) + graphs +
+                                 "the maps share no structure the matcher trusts");
 }
 }  // namespace
 
