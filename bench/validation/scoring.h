@@ -47,6 +47,8 @@ struct CaseScore
     /** One line per false pair, for the pictures: "gt G -> map M (stage), truth puts M D m from
      * G" (D absent when the truth does not place M). */
     std::vector<std::string> false_pairs;
+    /** The match's and the evaluation's messages (why nothing matched, what was refused). */
+    std::vector<std::string> messages;
     double precision = 0.0;  //!< true / matched (NaN when nothing was matched).
     double recall = 0.0;     //!< true / gt_with_counterpart (NaN when there is no counterpart).
     int brokenness_found = 0;

@@ -267,6 +267,9 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("false_core").value(s.false_core);
         j.key("false_grown").value(s.false_grown);
         j.key("max_group_rotation_error_deg").value(s.max_group_rotation_error_deg, 2);
+        j.key("messages").beginArray();
+        for (const auto& m : s.messages) j.value(m);
+        j.endArray();
         j.key("error").value(r.error);
         j.key("time_ms").value(r.time_ms, 1);
         j.endObject();

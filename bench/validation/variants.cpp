@@ -155,8 +155,16 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
         for (int cx = 0; cx < dsx; ++cx)
         {
             const Eigen::Vector2d q(v.map.idx2x(cx), v.map.idx2y(cy));
-            int n_occ = 0, n_free = 0, n_seen = 0, occ_part = -1, seen_part = -1;
+            // Each part's own verdict first (its samples' majority when coarsening), then the
+            // parts fused as a robot's grid fuses them: a wall seen from any part stays a wall,
+            // free seen from any part stays free, and a part that saw nothing there (the
+            // unknown around its building) says nothing. Voting unknown against another
+            // part's free space greyed out a broken map's turned rooms where they overlapped
+            // the other part's surroundings, and their graph with them (session 9).
+            int occ_part = -1, free_part = -1, seen_part = -1;
             for (std::size_t i = 0; i < parts.size(); ++i)
+            {
+                int n_occ = 0, n_free = 0, n_seen = 0;
                 for (int a = 0; a < k; ++a)
                     for (int b = 0; b < k; ++b)
                     {
@@ -170,20 +178,24 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
                         if (sx < 0 || sy < 0 || sx >= ssx || sy >= ssy) continue;
                         const float c = src_cells[static_cast<std::size_t>(sy) * ssx + sx];
                         ++n_seen;
-                        if (seen_part < 0) seen_part = static_cast<int>(i);
                         if (occupied(c))
-                        {
                             ++n_occ;
-                            if (occ_part < 0) occ_part = static_cast<int>(i);
-                        }
                         else if (freeCell(c))
                             ++n_free;
                     }
+                if (n_seen == 0) continue;
+                if (seen_part < 0) seen_part = static_cast<int>(i);
+                if (n_occ > 0 && occ_part < 0) occ_part = static_cast<int>(i);
+                if (n_occ == 0 && 2 * n_free > n_seen && free_part < 0)
+                    free_part = static_cast<int>(i);
+            }
             cell_part[static_cast<std::size_t>(cy) * dsx + cx] =
-                static_cast<std::int8_t>(occ_part >= 0 ? occ_part : seen_part);
-            if (n_occ > 0)
+                static_cast<std::int8_t>(occ_part >= 0    ? occ_part
+                                         : free_part >= 0 ? free_part
+                                                          : seen_part);
+            if (occ_part >= 0)
                 v.map.setCell(cx, cy, 0.0f);
-            else if (n_seen > 0 && 2 * n_free > n_seen)
+            else if (free_part >= 0)
                 v.map.setCell(cx, cy, 1.0f);
         }
 
