@@ -86,7 +86,9 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     std::vector<std::optional<Eigen::Vector2d>> mapped(map.vertices.size());
     if (!truth.different_building && truth.mapping)
         for (const auto& v : map.vertices)
-            mapped[static_cast<std::size_t>(v.id)] = truth.mapping(v.position_m);
+            mapped[static_cast<std::size_t>(v.id)] =
+                truth.vertex_mapping ? truth.vertex_mapping(v.position_m, v.clearance_m)
+                                     : truth.mapping(v.position_m);
     auto isTrue = [&](int g, int m)
     {
         const auto& q = mapped[static_cast<std::size_t>(m)];

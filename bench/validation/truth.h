@@ -33,6 +33,10 @@ std::string fmt(double v, int decimals);
 struct Truth
 {
     TruthMapping mapping;
+    /** A topology vertex's placement when it needs more than its position (the keyframe truth
+     * asks which scans drew the walls at the vertex's clearance); unset: `mapping`. */
+    std::function<std::optional<Eigen::Vector2d>(const Eigen::Vector2d& p_map, double clearance_m)>
+        vertex_mapping;
     /** Human-readable origin of the truth ("by construction", "known transform (data README)",
      * "same frame", "keyframe poses", "12 hand-labelled keypoints, fit rmse 0.08 m"). */
     std::string source;

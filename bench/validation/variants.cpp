@@ -521,18 +521,19 @@ Variant makeBroken(const COccupancyGridMap2D& gt, int breaks, std::uint32_t seed
     if (breaks == 1)
     {
         const double c = quantile(along, 0.5);
-        boxes = {{-big, c, -big, big}, {c, big, -big, big}};
+        boxes = std::vector<Box>{{-big, c, -big, big}, {c, big, -big, big}};
     }
     else if (breaks == 2)
     {
         const double c = quantile(along, 1.0 / 3.0), m = medianAcross(c, big);
-        boxes = {{-big, c, -big, big}, {c, big, -big, m}, {c, big, m, big}};
+        boxes = std::vector<Box>{{-big, c, -big, big}, {c, big, -big, m}, {c, big, m, big}};
     }
     else
     {
         const double c = quantile(along, 0.5), m0 = medianAcross(-big, c),
                      m1 = medianAcross(c, big);
-        boxes = {{-big, c, -big, m0}, {-big, c, m0, big}, {c, big, -big, m1}, {c, big, m1, big}};
+        boxes = std::vector<Box>{
+            {-big, c, -big, m0}, {-big, c, m0, big}, {c, big, -big, m1}, {c, big, m1, big}};
     }
     auto partOf = [&](const Eigen::Vector2d& p)
     {
