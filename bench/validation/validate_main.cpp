@@ -2,6 +2,8 @@
 // topoeval_validate: runs the validation corpus (doc/validation.md) through the library and
 // reports how often the matcher is right. Threads across cases; deterministic for a seed.
 
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/drawing.h>
 #include <mrpt_topoeval/errors.h>
@@ -465,6 +467,16 @@ int main(int argc, char** argv)
                 const fs::path png =
                     fs::path(opt.out) / "pictures" / (prefix + safeName(c.id) + ".png");
                 img.saveToFile(png.string());
+                // The case's map beside its picture, so that the case can be re-run alone
+                // (`topoeval compare <ground truth> NN_case.gridmap`, doc/validation.md).
+                const fs::path grid = fs::path(png).replace_extension(".gridmap");
+                const fs::path tmp = fs::path(grid).concat(".tmp");
+                {
+                    mrpt::io::CFileGZOutputStream f(tmp.string());
+                    auto arch = mrpt::serialization::archiveFrom(f);
+                    arch << map;
+                }
+                fs::rename(tmp, grid);
                 if (!r.score.false_pairs.empty())
                 {
                     std::string text;
