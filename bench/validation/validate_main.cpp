@@ -467,16 +467,22 @@ int main(int argc, char** argv)
                 const fs::path png =
                     fs::path(opt.out) / "pictures" / (prefix + safeName(c.id) + ".png");
                 img.saveToFile(png.string());
-                // The case's map beside its picture, so that the case can be re-run alone
-                // (`topoeval compare <ground truth> NN_case.gridmap`, doc/validation.md).
-                const fs::path grid = fs::path(png).replace_extension(".gridmap");
-                const fs::path tmp = fs::path(grid).concat(".tmp");
+                // The case's ground truth and map beside its picture, so that the case can be
+                // re-run alone (`topoeval compare NN_case.gt.gridmap NN_case.map.gridmap`).
+                auto writeGrid =
+                    [&](const mrpt::maps::COccupancyGridMap2D& grid, const char* suffix)
                 {
-                    mrpt::io::CFileGZOutputStream f(tmp.string());
-                    auto arch = mrpt::serialization::archiveFrom(f);
-                    arch << map;
-                }
-                fs::rename(tmp, grid);
+                    const fs::path file = fs::path(png).replace_extension(suffix);
+                    const fs::path tmp = fs::path(file).concat(".tmp");
+                    {
+                        mrpt::io::CFileGZOutputStream f(tmp.string());
+                        auto arch = mrpt::serialization::archiveFrom(f);
+                        arch << grid;
+                    }
+                    fs::rename(tmp, file);
+                };
+                writeGrid(groundTruthOf(corpus, c), ".gt.gridmap");
+                writeGrid(map, ".map.gridmap");
                 if (!r.score.false_pairs.empty())
                 {
                     std::string text;
