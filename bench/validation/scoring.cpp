@@ -45,6 +45,21 @@ TruthCheck checkTruth(const mrpt::maps::COccupancyGridMap2D& gt,
             // Distance between cell centres, less half a cell for the mapped point's offset.
             if (dist.at<float>(cy, cx) * res <= truth.wall_tolerance_m + 1e-9) ++check.on_wall;
         }
+    if (!truth.keeps_free_space || !truth.forward) return check;
+    // Free space kept: every free ground-truth cell's image in the map is known (free, or under
+    // a wall or clutter laid over it).
+    for (int y = 0; y < gy; ++y)
+        for (int x = 0; x < gx; ++x)
+        {
+            if (!(gt.getCell(x, y) > 0.65f)) continue;
+            ++check.free_cells;
+            const auto q = truth.forward(Eigen::Vector2d(gt.idx2x(x), gt.idx2y(y)));
+            if (!q) continue;
+            const int cx = map.x2idx(q->x()), cy = map.y2idx(q->y());
+            if (cx < 0 || cy < 0 || cx >= mx || cy >= my) continue;
+            const float c = map.getCell(cx, cy);
+            check.free_kept += (c < 0.35f || c > 0.65f) ? 1 : 0;
+        }
     return check;
 }
 

@@ -20,7 +20,14 @@ struct TruthCheck
     std::size_t cells = 0;     //!< Occupied map cells checked.
     std::size_t on_wall = 0;   //!< ... that land within the tolerance of a ground-truth wall.
     std::size_t unmapped = 0;  //!< ... for which the truth gives no point.
+    /** Free ground-truth cells, and those whose image in the map (Truth::forward) is known,
+     * free or occupied; counted when Truth::keeps_free_space. */
+    std::size_t free_cells = 0, free_kept = 0;
     double share() const { return cells ? static_cast<double>(on_wall) / cells : 1.0; }
+    double freeShare() const
+    {
+        return free_cells ? static_cast<double>(free_kept) / free_cells : 1.0;
+    }
 };
 
 /** Checks `truth` on `map` against `gt` (distance to the nearest ground-truth obstacle cell). */

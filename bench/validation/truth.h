@@ -33,6 +33,9 @@ std::string fmt(double v, int decimals);
 struct Truth
 {
     TruthMapping mapping;
+    /** The other way, ground truth -> map, where the generator knows it (identity and warped
+     * variants); used by the free-space check. Unset: not known. */
+    TruthMapping forward;
     /** A topology vertex's placement when it needs more than its position (the keyframe truth
      * asks which scans drew the walls at the vertex's clearance); unset: `mapping`. */
     std::function<std::optional<Eigen::Vector2d>(const Eigen::Vector2d& p_map, double clearance_m)>
@@ -55,5 +58,10 @@ struct Truth
     std::function<bool(const Eigen::Vector2d& p_map)> is_clutter;
     /** True for a different building: no pair can be true, coverage must be ~0. */
     bool different_building = false;
+    /** The variant keeps all of the ground truth's free space known (free, or under a wall or
+     * clutter laid over it): moved, resampled, noisy, broken and furnished maps, not crops or
+     * SLAM maps. The truth check then also asks that their free space be kept (a generator
+     * that lost it greyed out a broken map's turned rooms until session 9). */
+    bool keeps_free_space = false;
 };
 }  // namespace mrpt_topoeval::validation

@@ -248,6 +248,8 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("on_wall").value(static_cast<std::uint64_t>(r.truth_check.on_wall));
         j.key("share").value(r.truth_check.share(), 4);
         j.key("wall_tolerance_m").value(r.wall_tolerance_m, 3);
+        j.key("free_cells").value(static_cast<std::uint64_t>(r.truth_check.free_cells));
+        j.key("free_kept").value(r.truth_check.freeShare(), 4);
         j.endObject();
         j.key("distortion_m").value(r.distortion_m, 4);
         j.key("gt_vertices").value(static_cast<std::uint64_t>(s.gt_vertices));

@@ -84,6 +84,7 @@ Truth identityTruth(double tolerance_m)
 {
     Truth t;
     t.mapping = [](const Eigen::Vector2d& p) { return std::optional<Eigen::Vector2d>(p); };
+    t.forward = t.mapping;
     t.source = "by construction";
     t.wall_tolerance_m = tolerance_m;
     return t;
@@ -221,6 +222,12 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
         return std::optional<Eigen::Vector2d>((*shared_inv)[static_cast<std::size_t>(i)].apply(q));
     };
     v.truth.part_of = part_of;
+    v.truth.forward = [shared_parts](const Eigen::Vector2d& p)
+    {
+        for (const auto& part : *shared_parts)
+            if (part.contains(p)) return std::optional<Eigen::Vector2d>(part.gt_to_map.apply(p));
+        return std::optional<Eigen::Vector2d>();
+    };
     for (const auto& part : parts)
         v.truth.part_yaw_deg.push_back(std::remainder(-part.gt_to_map.yaw_rad, 2 * M_PI) / kDeg);
     v.truth.source = "by construction";
