@@ -197,9 +197,7 @@ const mrpt::maps::COccupancyGridMap2D& groundTruthOf(const Corpus& corpus, const
     return corpus.ground_truths[c.gt].grid;
 }
 
-namespace
-{
-Variant makeVariant(const Corpus& corpus, const CaseSpec& c)
+Variant makeCaseMap(const Corpus& corpus, const CaseSpec& c)
 {
     if (c.real_pair >= 0)
     {
@@ -242,17 +240,5 @@ Variant makeVariant(const Corpus& corpus, const CaseSpec& c)
         return v;
     }
     throw std::invalid_argument("unknown case kind '" + c.kind + "'");
-}
-}  // namespace
-
-Variant makeCaseMap(const Corpus& corpus, const CaseSpec& c)
-{
-    Variant v = makeVariant(corpus, c);
-    // Variants that keep all of the ground truth's free space known (not crops, SLAM maps,
-    // other buildings or real maps): the truth check also asks that it be kept.
-    for (const char* kind :
-         {"identical", "rigid", "resample", "speckle", "gaps", "ragged", "broken", "furniture"})
-        v.truth.keeps_free_space = v.truth.keeps_free_space || (c.real_pair < 0 && c.kind == kind);
-    return v;
 }
 }  // namespace mrpt_topoeval::validation

@@ -368,7 +368,10 @@ KeyframeMappings keyframeMapping(std::vector<CPose2D> est, std::vector<CPose2D> 
                 const auto it = x.buckets.find({bx, by});
                 if (it == x.buckets.end()) continue;
                 for (const auto& [q, k] : it->second)
-                    if ((q - p).norm() <= r) near.emplace_back((q - p).norm(), k);
+                {
+                    const double d = (q - p).norm();
+                    if (d <= r) near.emplace_back(d, k);
+                }
             }
         std::map<int, int> votes;  // keyframe -> its endpoints on the obstacles nearest to p
         for (const auto& [d, k] : near)
@@ -870,12 +873,12 @@ KeyframeTruth intelKeyframeTruth(const fs::path& data, const fs::path& simplemap
                                         [r](const auto& x, const auto& y)
                                         { return std::abs(x.first - r) < std::abs(y.first - r); });
         CPose2D truth = a->second + (raw[r].odometry - raw[a->first].odometry);
+        mrpt::maps::CSimplePointsMap pts;  // the scan's endpoints, for ICP and the truth
+        pts.insertObservation(*scan);
         if (a->first == r)
             ++kt.exact;
         else
         {
-            mrpt::maps::CSimplePointsMap pts;
-            pts.insertObservation(*scan);
             mrpt::slam::CICP::TReturnInfo info;
             const auto aligned = icp.Align(&ref, &pts, truth, info);
             const CPose2D refined = aligned->getMeanVal();
@@ -888,8 +891,6 @@ KeyframeTruth intelKeyframeTruth(const fs::path& data, const fs::path& simplemap
         }
         kt.est.push_back(CPose2D(pdf->getMeanVal()));
         kt.truth.push_back(truth);
-        mrpt::maps::CSimplePointsMap pts;
-        pts.insertObservation(*scan);
         Points local;
         for (std::size_t i = 0; i < pts.size(); ++i)
         {

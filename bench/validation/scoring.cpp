@@ -168,10 +168,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     s.recall = s.gt_with_counterpart
                    ? std::min(1.0, static_cast<double>(s.true_pairs) / s.gt_with_counterpart)
                    : nan;
-    s.messages = report.match.messages;
-    for (const auto& m : report.messages)
-        if (std::find(s.messages.begin(), s.messages.end(), m) == s.messages.end())
-            s.messages.push_back(m);
+    s.messages = report.messages;  // the match's, then the evaluation's
     s.coverage = report.coverage;
     s.quality = report.quality;
     s.relative_rmse_m = report.relative_accuracy.rmse_m;

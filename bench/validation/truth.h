@@ -59,9 +59,10 @@ struct Truth
     /** True for a different building: no pair can be true, coverage must be ~0. */
     bool different_building = false;
     /** The variant keeps all of the ground truth's free space known (free, or under a wall or
-     * clutter laid over it): moved, resampled, noisy, broken and furnished maps, not crops or
-     * SLAM maps. The truth check then also asks that their free space be kept (a generator
-     * that lost it greyed out a broken map's turned rooms until session 9). */
+     * clutter laid over it): set by identityTruth() and warpGrid(), so by every generated kind
+     * but crops (which clear it), SLAM maps and other buildings. The truth check then also asks
+     * that their free space be kept (a generator that lost it greyed out a broken map's turned
+     * rooms until session 9). */
     bool keeps_free_space = false;
 };
 }  // namespace mrpt_topoeval::validation

@@ -85,6 +85,7 @@ Truth identityTruth(double tolerance_m)
     Truth t;
     t.mapping = [](const Eigen::Vector2d& p) { return std::optional<Eigen::Vector2d>(p); };
     t.forward = t.mapping;
+    t.keeps_free_space = true;
     t.source = "by construction";
     t.wall_tolerance_m = tolerance_m;
     return t;
@@ -222,6 +223,7 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
         return std::optional<Eigen::Vector2d>((*shared_inv)[static_cast<std::size_t>(i)].apply(q));
     };
     v.truth.part_of = part_of;
+    v.truth.keeps_free_space = true;
     v.truth.forward = [shared_parts](const Eigen::Vector2d& p)
     {
         for (const auto& part : *shared_parts)
@@ -482,6 +484,7 @@ Variant makeCrop(const COccupancyGridMap2D& gt, double keep_share, std::uint32_t
                 v.map.setCell(tx, ty, src[static_cast<std::size_t>(y) * sx + x]);
         }
     v.truth = identityTruth(defaultTolerance(res, res));
+    v.truth.keeps_free_space = false;  // the part cut away is unknown
     return v;
 }
 

@@ -289,13 +289,7 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                     continue;
                 std::vector<int> u = b.groups[i].gt_vertices;
                 u.insert(u.end(), b.groups[j].gt_vertices.begin(), b.groups[j].gt_vertices.end());
-                std::vector<Eigen::Vector2d> ug, um;
-                for (int v : u)
-                {
-                    ug.push_back(gt.vertices[v].position_m);
-                    um.push_back(map.vertices[partner[v]].position_m);
-                }
-                b.groups[i].transform = internal::hornAlign(ug, um, &b.groups[i].squared_error_m2);
+                b.groups[i].transform = fitOf(u, &b.groups[i].squared_error_m2);
                 b.groups[i].gt_vertices = std::move(u);
                 b.groups.erase(b.groups.begin() + static_cast<long>(j));
                 merged = true;
