@@ -25,7 +25,8 @@ namespace mrpt_topoeval::cli
 namespace
 {
 /** The run's steps in pipeline order for the summary. */
-std::vector<std::pair<std::string, double>> orderedTimings(const std::map<std::string, double>& t)
+std::vector<std::pair<std::string, double>> orderedCompareTimings(
+    const std::map<std::string, double>& t)
 {
     static const std::vector<std::string> kOrder = {"load_ground_truth", "load_map", "graphs",
                                                     "similarity",        "match",    "evaluation",
@@ -151,7 +152,7 @@ int verbCompare(int argc, char** argv)
     os << (verbose ? report.fullReport() : report.briefReport());
     if (verbose)
     {
-        os << "time [ms]   " << timingList(orderedTimings(timing_ms)) << "\n";
+        os << "time [ms]   " << timingList(orderedCompareTimings(timing_ms)) << "\n";
     }
     for (const auto& w : written) os << "wrote       " << w << "\n";
     flushStdout();

@@ -31,7 +31,8 @@ namespace
 constexpr int kLargeMapCells = 4000;
 
 /** The graph builder's steps in pipeline order for the summary, the builder's total last. */
-std::vector<std::pair<std::string, double>> orderedTimings(const std::map<std::string, double>& t)
+std::vector<std::pair<std::string, double>> orderedGraphTimings(
+    const std::map<std::string, double>& t)
 {
     static const std::vector<std::string> kOrder = {
         "load_map",  "classify",          "voronoi", "chains",    "prune",
@@ -70,7 +71,7 @@ void printSummary(std::ostream& os, const LoadedMap& lm, const TopologyGraph& g,
         }
     os << (any ? " (non-spurious vertices)" : "none") << "\n";
     os << "time [ms]  ";
-    for (const auto& [step, ms] : orderedTimings(timing_ms))
+    for (const auto& [step, ms] : orderedGraphTimings(timing_ms))
         os << step << " " << fmt("%.1f", ms) << ", ";
     os << "run " << fmt("%.1f", run_ms) << "\n";
     for (const auto& w : written) os << "wrote      " << w << "\n";

@@ -52,7 +52,8 @@ Side loadSide(const std::string& path, const std::string& role, const Parameters
 }
 
 /** The run's steps in pipeline order for the summary. */
-std::vector<std::pair<std::string, double>> orderedTimings(const std::map<std::string, double>& t)
+std::vector<std::pair<std::string, double>> orderedMatchTimings(
+    const std::map<std::string, double>& t)
 {
     static const std::vector<std::string> kOrder = {"load_ground_truth",
                                                     "load_map",
@@ -96,7 +97,7 @@ void printSummary(std::ostream& os, const Side& gt, const Side& map, SimilarityM
             os << (i ? ", " : "") << match.isomorphism_sizes[i];
     }
     os << "\n";
-    os << "time [ms]     " << timingList(orderedTimings(timing_ms)) << "\n";
+    os << "time [ms]     " << timingList(orderedMatchTimings(timing_ms)) << "\n";
     for (const auto& w : written) os << "wrote         " << w << "\n";
 }
 }  // namespace

@@ -14,8 +14,6 @@ namespace mrpt_topoeval::validation
 {
 namespace
 {
-constexpr double kDeg = M_PI / 180.0;
-
 /** A seed per (corpus seed, ground truth, variant): stable when cases are added elsewhere. */
 std::uint32_t caseSeed(std::uint32_t seed, const std::string& id)
 {

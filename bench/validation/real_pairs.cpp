@@ -174,7 +174,7 @@ private:
 };
 
 /** Shares of the map's occupied cells (clutter left out) that the truth maps near a wall. */
-struct TruthCheck
+struct WallShares
 {
     std::size_t cells = 0;  //!< Occupied, not clutter, with a mapping.
     double within_tol = 0;  //!< Share within Truth::wall_tolerance_m.
@@ -187,10 +187,10 @@ struct TruthCheck
     }
 };
 
-TruthCheck checkTruth(const WallDistance& gt_walls, const COccupancyGridMap2D& map,
+WallShares wallShares(const WallDistance& gt_walls, const COccupancyGridMap2D& map,
                       const Truth& truth)
 {
-    TruthCheck c;
+    WallShares c;
     std::size_t n_tol = 0, n_015 = 0, n_025 = 0;
     for (const Eigen::Vector2d& p : occupiedCells(map))
     {
@@ -210,10 +210,10 @@ TruthCheck checkTruth(const WallDistance& gt_walls, const COccupancyGridMap2D& m
     return c;
 }
 
-TruthCheck checkTruth(const COccupancyGridMap2D& gt, const COccupancyGridMap2D& map,
+WallShares wallShares(const COccupancyGridMap2D& gt, const COccupancyGridMap2D& map,
                       const Truth& truth)
 {
-    return checkTruth(WallDistance(gt), map, truth);
+    return wallShares(WallDistance(gt), map, truth);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -543,7 +543,7 @@ void note(std::vector<std::string>* skipped, const std::string& line)
 /** Fills the pair's truth check numbers into its source text. */
 void appendCheck(RealPair& pair)
 {
-    const TruthCheck c = checkTruth(pair.gt, pair.map, pair.truth);
+    const WallShares c = wallShares(pair.gt, pair.map, pair.truth);
     pair.truth.source += "; truth check " + c.text() + " within " +
                          fmt(pair.truth.wall_tolerance_m, 2) + " / 0.15 / 0.25 m";
 }
@@ -619,14 +619,14 @@ void gazeboPairs(const fs::path& data, std::vector<RealPair>& out)
 
         Truth same;
         same.mapping = identityMapping();
-        const TruthCheck c_same = checkTruth(gt_walls, p.map, same);
+        const WallShares c_same = wallShares(gt_walls, p.map, same);
 
         Points est, truth;
         readPoseCsv(dir / "poses" / (poses + ".csv"), est, truth);
         const std::size_t n_poses = est.size();
         Truth local;
         local.mapping = localPoseFitMapping(std::move(est), std::move(truth), kLocalFitPoses);
-        const TruthCheck c_local = checkTruth(gt_walls, p.map, local);
+        const WallShares c_local = wallShares(gt_walls, p.map, local);
 
         const bool use_local = c_local.within_tol > c_same.within_tol;
         p.truth.mapping = use_local ? local.mapping : same.mapping;

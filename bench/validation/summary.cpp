@@ -180,6 +180,9 @@ Summary summarize(const std::vector<CaseResult>& results)
     // the order of the points).
     using Points = std::pair<std::vector<double>, std::vector<double>>;
     std::map<std::pair<std::string, std::string>, std::map<std::string, Points>> per_building;
+    // Each point's ground-truth vertices with a counterpart, in the same order.
+    std::map<std::pair<std::string, std::string>, std::map<std::string, std::vector<std::size_t>>>
+        counterparts;
     for (const auto& r : results)
     {
         if (!r.error.empty() || r.spec.severity < 0) continue;
@@ -197,6 +200,8 @@ Summary summarize(const std::vector<CaseResult>& results)
             auto& own = per_building[{r.spec.family, l}][r.spec.building];
             own.first.push_back(-severity);
             own.second.push_back(r.score.quality);
+            counterparts[{r.spec.family, l}][r.spec.building].push_back(
+                r.score.gt_with_counterpart);
         }
     }
     for (const auto& [key, buildings] : per_building)
@@ -216,6 +221,18 @@ Summary summarize(const std::vector<CaseResult>& results)
         double sum = 0.0;
         for (const auto& [building, own] : buildings)
         {
+            const auto& complete = counterparts[key][building];
+            for (std::size_t i = 0; i < own.first.size(); ++i)
+                for (std::size_t j = 0; j < own.first.size(); ++j)
+                {
+                    // first = -severity: i less damaged than j, yet lower quality
+                    if (own.first[i] > own.first[j] && own.second[i] < own.second[j])
+                    {
+                        ++f.inversions;
+                        if (complete[i] < complete[j]) ++f.inversions_less_complete;
+                    }
+                    f.ties += own.first[i] > own.first[j] && own.second[i] == own.second[j];
+                }
             const double rho = spearman(own.first, own.second);
             if (!std::isfinite(rho)) continue;
             sum += rho;
@@ -250,13 +267,14 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
     row(s.pooled_generated);
     row(s.pooled);
     o << "\nfamily             ladder  points  spearman(severity, quality)  per building (mean "
-         "of)\n";
+         "of)  inversions (less complete)  ties\n";
     for (const auto& f : s.ladders)
     {
         char buf[200];
-        std::snprintf(buf, sizeof buf, "%-18s %-7s %6zu  %-28s %s (%zu)\n", f.family.c_str(),
-                      f.ladder.c_str(), f.points, num(f.spearman).c_str(),
-                      num(f.spearman_per_building).c_str(), f.buildings);
+        std::snprintf(buf, sizeof buf, "%-18s %-7s %6zu  %-28s %-5s (%zu)%12zu (%zu)%19zu\n",
+                      f.family.c_str(), f.ladder.c_str(), f.points, num(f.spearman).c_str(),
+                      num(f.spearman_per_building).c_str(), f.buildings, f.inversions,
+                      f.inversions_less_complete, f.ties);
         o << buf;
     }
     for (const auto& a : s.kinds)

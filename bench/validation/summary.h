@@ -66,6 +66,14 @@ struct FamilyLadder
      * points with a spread. */
     double spearman_per_building = 0.0;
     std::size_t buildings = 0;  //!< Buildings in that mean.
+    /** Within each building, the pairs of maps that quality orders against the ladder (the
+     * less damaged map scores lower), and of those the pairs in which the less damaged map is
+     * also the less complete one (fewer ground-truth vertices with a counterpart, by the truth):
+     * each map is worse in one respect, and the ladder's severity sees only the other. */
+    std::size_t inversions = 0, inversions_less_complete = 0;
+    /** Within each building, the pairs of maps of different severity with the same quality
+     * (two levels of which nothing is matched both score 0). */
+    std::size_t ties = 0;
 };
 
 struct Summary

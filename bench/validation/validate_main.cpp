@@ -225,6 +225,10 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("spearman").value(f.spearman, 4);
         j.key("spearman_per_building").value(f.spearman_per_building, 4);
         j.key("buildings").value(static_cast<std::uint64_t>(f.buildings));
+        j.key("inversions").value(static_cast<std::uint64_t>(f.inversions));
+        j.key("inversions_less_complete")
+            .value(static_cast<std::uint64_t>(f.inversions_less_complete));
+        j.key("ties").value(static_cast<std::uint64_t>(f.ties));
         j.endObject();
     }
     j.endArray();

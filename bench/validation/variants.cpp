@@ -15,8 +15,6 @@ using mrpt::maps::COccupancyGridMap2D;
 
 namespace
 {
-constexpr double kDeg = M_PI / 180.0;
-
 bool occupied(float p_free) { return p_free < 0.35f; }
 bool freeCell(float p_free) { return p_free > 0.65f; }
 

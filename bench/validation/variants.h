@@ -6,6 +6,7 @@
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,6 +15,9 @@
 
 namespace mrpt_topoeval::validation
 {
+/** Radians per degree. */
+constexpr double kDeg = M_PI / 180.0;
+
 /** A map made from a ground truth, and how it relates to it. */
 struct Variant
 {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "json/match_json_internal.h"
+
 namespace mrpt_topoeval
 {
 namespace
@@ -12,8 +14,8 @@ namespace
 
 // Fixed precisions, so equal graphs give equal bytes and the files stay readable:
 // 0.1 mm for positions and lengths (far below any cell size), 0.001 deg for angles.
-constexpr int kMetreDecimals = 4;
-constexpr int kDegreeDecimals = 3;
+using internal::kDegreeDecimals;
+using internal::kMetreDecimals;
 
 constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 

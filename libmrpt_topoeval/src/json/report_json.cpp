@@ -25,10 +25,10 @@ namespace
 // Fixed precisions, so equal reports give equal bytes: 0.1 mm for distances (as the graph's
 // JSON), 1e-6 m^2 for squared errors (the threshold is tenths of m^2), 1e-4 for scores in
 // [0, 1] (as similarities), 0.001 deg (and 0.001 ms: writeTiming).
-constexpr int kMetreDecimals = internal::kMetreDecimals;
+using internal::kDegreeDecimals;
+using internal::kMetreDecimals;
 constexpr int kSquareMetreDecimals = 6;
 constexpr int kScoreDecimals = internal::kSimilarityDecimals;
-constexpr int kDegreeDecimals = 3;
 
 std::uint64_t u64(std::size_t n) { return static_cast<std::uint64_t>(n); }
 

@@ -14,11 +14,11 @@ namespace
 {
 using internal::MatchView;
 
-struct Candidate
+struct GrowthCandidate
 {
     double score;
     int gt, map, from_gt;
-    bool operator<(const Candidate& o) const
+    bool operator<(const GrowthCandidate& o) const
     {
         // priority_queue pops the largest: highest similarity, then lowest ids.
         return std::tie(score, o.gt, o.map) < std::tie(o.score, gt, map);
@@ -107,7 +107,7 @@ std::vector<GrownPair> growNeighbours(MatchContext& ctx, std::vector<int>& iso_o
     const double max_angle = p.max_angle_difference_deg * M_PI / 180.0;
     // Each hop skipped lowers a candidate's priority, so direct neighbours are paired first.
     constexpr double kSkipPenalty = 0.8;
-    std::priority_queue<Candidate> queue;
+    std::priority_queue<GrowthCandidate> queue;
 
     // Unassigned pairs reachable from an assigned pair along edges that leave in matching
     // directions (after the local rotation) with roughly the same path length.
@@ -136,7 +136,7 @@ std::vector<GrownPair> growNeighbours(MatchContext& ctx, std::vector<int>& iso_o
     std::vector<GrownPair> grown;
     while (!queue.empty())
     {
-        const Candidate c = queue.top();
+        const GrowthCandidate c = queue.top();
         queue.pop();
         if (ctx.gt_to_map[c.gt] >= 0 || ctx.map_to_gt[c.map] >= 0) continue;
         ctx.gt_to_map[c.gt] = c.map;
