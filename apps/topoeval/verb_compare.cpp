@@ -24,16 +24,6 @@ namespace mrpt_topoeval::cli
 {
 namespace
 {
-/** The run's steps in pipeline order for the summary. */
-std::vector<std::pair<std::string, double>> orderedCompareTimings(
-    const std::map<std::string, double>& t)
-{
-    static const std::vector<std::string> kOrder = {"load_ground_truth", "load_map", "graphs",
-                                                    "similarity",        "match",    "evaluation",
-                                                    "evaluate",          "draw",     "total"};
-    return cli::orderedTimings(t, kOrder);
-}
-
 void printSide(std::ostream& os, const char* label, const LoadedMap& m, const TopologyGraph& g)
 {
     os << label << m.file << " (" << m.format << "): " << g.vertices.size() << " vertices ("
@@ -152,7 +142,12 @@ int verbCompare(int argc, char** argv)
     os << (verbose ? report.fullReport() : report.briefReport());
     if (verbose)
     {
-        os << "time [ms]   " << timingList(orderedCompareTimings(timing_ms)) << "\n";
+        // The run's steps in pipeline order.
+        os << "time [ms]   "
+           << timingList(orderedTimings(
+                  timing_ms, {"load_ground_truth", "load_map", "graphs", "similarity", "match",
+                              "evaluation", "evaluate", "draw", "total"}))
+           << "\n";
     }
     for (const auto& w : written) os << "wrote       " << w << "\n";
     flushStdout();

@@ -51,25 +51,6 @@ Side loadSide(const std::string& path, const std::string& role, const Parameters
     return s;
 }
 
-/** The run's steps in pipeline order for the summary. */
-std::vector<std::pair<std::string, double>> orderedMatchTimings(
-    const std::map<std::string, double>& t)
-{
-    static const std::vector<std::string> kOrder = {"load_ground_truth",
-                                                    "load_map",
-                                                    "graph_ground_truth",
-                                                    "graph_map",
-                                                    "similarity",
-                                                    "similarity_clouds",
-                                                    "similarity_icp",
-                                                    "isomorphism",
-                                                    "neighbour_growing",
-                                                    "match",
-                                                    "draw",
-                                                    "total"};
-    return cli::orderedTimings(t, kOrder);
-}
-
 void printSide(std::ostream& os, const char* label, const Side& s)
 {
     os << label << s.map.file << " (" << s.map.format << "): " << s.graph.vertices.size()
@@ -97,7 +78,13 @@ void printSummary(std::ostream& os, const Side& gt, const Side& map, SimilarityM
             os << (i ? ", " : "") << match.isomorphism_sizes[i];
     }
     os << "\n";
-    os << "time [ms]     " << timingList(orderedMatchTimings(timing_ms)) << "\n";
+    // The run's steps in pipeline order.
+    os << "time [ms]     "
+       << timingList(orderedTimings(
+              timing_ms, {"load_ground_truth", "load_map", "graph_ground_truth", "graph_map",
+                          "similarity", "similarity_clouds", "similarity_icp", "isomorphism",
+                          "neighbour_growing", "match", "draw", "total"}))
+       << "\n";
     for (const auto& w : written) os << "wrote         " << w << "\n";
 }
 }  // namespace

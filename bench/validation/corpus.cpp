@@ -1,6 +1,8 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include "corpus.h"
 
+#include <mrpt/core/bits_math.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -48,10 +50,9 @@ void addVariants(Corpus& corpus, std::size_t gi, std::size_t other, bool generat
     const int rigid_n = generated ? 2 : 1;
     for (int i = 1; i <= rigid_n; ++i)
         add("rigid", "_" + std::to_string(i),
-            std::remainder(
+            mrpt::RAD2DEG(std::remainder(
                 randomRigid(caseSeed(seed, g.name + "/rigid_" + std::to_string(i))).yaw_rad,
-                2 * M_PI) /
-                kDeg);
+                2 * M_PI)));
     if (res < 0.099) add("resample", "_0.10", 0.10);
     if (generated) add("resample", "_x1.37", res * 1.37);
     add("speckle", "", 0.15);

@@ -178,11 +178,13 @@ Summary summarize(const std::vector<CaseResult>& results)
     // Spearman per family and ladder, pooled over the family's buildings and within each.
     // Points of each building's ladder; the pooled ladder is their union (ranks do not depend on
     // the order of the points).
-    using Points = std::pair<std::vector<double>, std::vector<double>>;
+    struct Points
+    {
+        std::vector<double> damage;  // -severity: higher is less damaged
+        std::vector<double> quality;
+        std::vector<std::size_t> counterparts;  // ground-truth vertices with a counterpart
+    };
     std::map<std::pair<std::string, std::string>, std::map<std::string, Points>> per_building;
-    // Each point's ground-truth vertices with a counterpart, in the same order.
-    std::map<std::pair<std::string, std::string>, std::map<std::string, std::vector<std::size_t>>>
-        counterparts;
     for (const auto& r : results)
     {
         if (!r.error.empty() || r.spec.severity < 0) continue;
@@ -198,10 +200,9 @@ Summary summarize(const std::vector<CaseResult>& results)
                                         ? (std::isfinite(r.distortion_m) ? r.distortion_m : 0.0)
                                         : static_cast<double>(r.spec.severity);
             auto& own = per_building[{r.spec.family, l}][r.spec.building];
-            own.first.push_back(-severity);
-            own.second.push_back(r.score.quality);
-            counterparts[{r.spec.family, l}][r.spec.building].push_back(
-                r.score.gt_with_counterpart);
+            own.damage.push_back(-severity);
+            own.quality.push_back(r.score.quality);
+            own.counterparts.push_back(r.score.gt_with_counterpart);
         }
     }
     for (const auto& [key, buildings] : per_building)
@@ -209,31 +210,30 @@ Summary summarize(const std::vector<CaseResult>& results)
         Points pts;
         for (const auto& [building, own] : buildings)
         {
-            pts.first.insert(pts.first.end(), own.first.begin(), own.first.end());
-            pts.second.insert(pts.second.end(), own.second.begin(), own.second.end());
+            pts.damage.insert(pts.damage.end(), own.damage.begin(), own.damage.end());
+            pts.quality.insert(pts.quality.end(), own.quality.begin(), own.quality.end());
         }
-        if (pts.first.size() < 3) continue;
+        if (pts.damage.size() < 3) continue;
         FamilyLadder f;
         f.family = key.first;
         f.ladder = key.second;
-        f.points = pts.first.size();
-        f.spearman = spearman(pts.first, pts.second);
+        f.points = pts.damage.size();
+        f.spearman = spearman(pts.damage, pts.quality);
         double sum = 0.0;
         for (const auto& [building, own] : buildings)
         {
-            const auto& complete = counterparts[key][building];
-            for (std::size_t i = 0; i < own.first.size(); ++i)
-                for (std::size_t j = 0; j < own.first.size(); ++j)
+            for (std::size_t i = 0; i < own.damage.size(); ++i)
+                for (std::size_t j = 0; j < own.damage.size(); ++j)
                 {
-                    // first = -severity: i less damaged than j, yet lower quality
-                    if (own.first[i] > own.first[j] && own.second[i] < own.second[j])
+                    if (own.damage[i] <= own.damage[j]) continue;  // i is the less damaged
+                    if (own.quality[i] < own.quality[j])
                     {
                         ++f.inversions;
-                        if (complete[i] < complete[j]) ++f.inversions_less_complete;
+                        f.inversions_less_complete += own.counterparts[i] < own.counterparts[j];
                     }
-                    f.ties += own.first[i] > own.first[j] && own.second[i] == own.second[j];
+                    f.ties += own.quality[i] == own.quality[j];
                 }
-            const double rho = spearman(own.first, own.second);
+            const double rho = spearman(own.damage, own.quality);
             if (!std::isfinite(rho)) continue;
             sum += rho;
             ++f.buildings;

@@ -1,6 +1,8 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include "variants.h"
 
+#include <mrpt/core/bits_math.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -119,7 +121,7 @@ Rigid2D randomRigid(std::uint32_t seed, double max_shift_m)
         yaw_deg = uniform(rng, 0.0, 360.0);
     } while (std::abs(std::remainder(yaw_deg, 90.0)) < 8.0);
     Rigid2D r;
-    r.yaw_rad = std::remainder(yaw_deg * kDeg, 2.0 * M_PI);
+    r.yaw_rad = std::remainder(mrpt::DEG2RAD(yaw_deg), 2.0 * M_PI);
     r.t_m = {uniform(rng, -max_shift_m, max_shift_m), uniform(rng, -max_shift_m, max_shift_m)};
     return r;
 }
@@ -229,7 +231,8 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
         return std::optional<Eigen::Vector2d>();
     };
     for (const auto& part : parts)
-        v.truth.part_yaw_deg.push_back(std::remainder(-part.gt_to_map.yaw_rad, 2 * M_PI) / kDeg);
+        v.truth.part_yaw_deg.push_back(
+            mrpt::RAD2DEG(std::remainder(-part.gt_to_map.yaw_rad, 2 * M_PI)));
     v.truth.source = "by construction";
     v.truth.wall_tolerance_m = defaultTolerance(src_res, res);
     return v;
@@ -597,7 +600,7 @@ Variant makeBroken(const COccupancyGridMap2D& gt, int breaks, std::uint32_t seed
             Eigen::Vector2d c = Eigen::Vector2d::Zero();
             if (!from.empty())
                 c = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
-            r.yaw_rad = yaw[j] * kDeg;
+            r.yaw_rad = mrpt::DEG2RAD(yaw[j]);
             r.t_m = c - Eigen::Rotation2Dd(r.yaw_rad) * c;
         }
         const Box box = boxes[j];

@@ -6,7 +6,6 @@
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,9 +14,6 @@
 
 namespace mrpt_topoeval::validation
 {
-/** Radians per degree. */
-constexpr double kDeg = M_PI / 180.0;
-
 /** A map made from a ground truth, and how it relates to it. */
 struct Variant
 {

@@ -5,15 +5,14 @@
 #include <cmath>
 #include <cstdint>
 
-#include "json/match_json_internal.h"
+#include "json/decimals.h"
 
 namespace mrpt_topoeval
 {
 namespace
 {
 
-// Fixed precisions, so equal graphs give equal bytes and the files stay readable:
-// 0.1 mm for positions and lengths (far below any cell size), 0.001 deg for angles.
+// 0.1 mm for positions and lengths, 0.001 deg for angles (json/decimals.h).
 using internal::kDegreeDecimals;
 using internal::kMetreDecimals;
 

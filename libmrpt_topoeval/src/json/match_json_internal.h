@@ -11,17 +11,10 @@
 // their include path.
 #include <mrpt_topoeval/json/JsonWriter.h>
 
+#include "decimals.h"  // beside this header, so found without src/ on the include path
+
 namespace mrpt_topoeval::internal
 {
-/** Decimals of similarities in [0, 1] (finer than any threshold a user would set). */
-constexpr int kSimilarityDecimals = 4;
-
-/** Decimals of distances in metres: 0.1 mm, in every JSON document. */
-constexpr int kMetreDecimals = 4;
-
-/** Decimals of angles in degrees: 0.001 degree, in every JSON document. */
-constexpr int kDegreeDecimals = 3;
-
 /** Writes the object `{"file", "vertices", "non_spurious_vertices", "half_edges"}` describing
  * one side of a match, as the value of the member whose key the caller has written; with
  * `matchable` (the quality report's), also "matchable_vertices" and "edge_length_m". */
