@@ -71,6 +71,10 @@ struct TopologyGraph
     std::vector<TopoEdge> edges;
     /** The outer boundary of the map used to cut the graph (alpha shape polygon) [m]. */
     std::vector<Eigen::Vector2d> outer_boundary_m;
+    /** Centres of the occupied cells that border non-occupied space (the obstacle surfaces
+     * the skeleton was built from), world frame [m]. The matcher checks a small group's rigid
+     * fit against them (doc/matching.md). */
+    std::vector<Eigen::Vector2f> wall_points_m;
     /** Notes on how the graph came out (no obstacles, pure ring, ...) for the user. */
     std::vector<std::string> warnings;
 

@@ -343,6 +343,8 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
                        (at(x - 1, y) == kFree || at(x + 1, y) == kFree || at(x, y - 1) == kFree ||
                         at(x, y + 1) == kFree);
             if (site) vin.sites.emplace_back(cx, cy);
+            if (site && c == kOccupied)
+                graph.wall_points_m.emplace_back(float(grid.idx2x(cx)), float(grid.idx2y(cy)));
         }
     stats.sites = vin.sites.size();
     timer.lap("sites");

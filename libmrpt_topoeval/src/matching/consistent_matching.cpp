@@ -14,16 +14,21 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <tuple>
 
 #include "geometry/horn.h"
 #include "matching/matching.h"
+#include "matching/wall_agreement.h"
 
 namespace mrpt_topoeval::internal
 {
 namespace
 {
+/** Bucket of the wall-point index [m]: a few wall tolerances, so a query reads 9 buckets. */
+constexpr double kWallBucketM = 0.5;
+
 struct Candidate
 {
     int gt = -1, map = -1;
@@ -334,6 +339,23 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     };
     // Each accepted group's fit, made once in accept() (settle() asks for it on every try).
     std::vector<Transform2D> core_fits;
+    // A further group less similar than a small group must be (a part whose vertices'
+    // attributes changed at the cut) is kept when the walls around it agree under its fit and
+    // pin it (min_part_wall_agreement, max_wall_pinning). The walls are indexed on first use.
+    std::optional<WallIndex> gt_walls, map_walls;
+    auto wallsConfirm = [&](const std::vector<int>& group, const Transform2D& fit)
+    {
+        if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
+        if (!gt_walls) gt_walls.emplace(gt.wall_points_m, kWallBucketM);
+        if (!map_walls) map_walls.emplace(map.wall_points_m, kWallBucketM);
+        std::vector<std::pair<int, int>> pairs;
+        for (int i : group) pairs.emplace_back(cands[i].gt, cands[i].map);
+        const double wall_tolerance =
+            std::max(p.wall_tolerance_m, 1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
+        const WallAgreement walls = wallAgreement(gt, map, *gt_walls, *map_walls, pairs, fit,
+                                                  p.wall_margin_m, wall_tolerance);
+        return walls.share >= p.min_part_wall_agreement && walls.pinning <= p.max_wall_pinning;
+    };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
     // biggest part linked in both graphs; then the size, extent, bridge and similarity rules.
@@ -424,7 +446,9 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             // As similar as a small graph's group must be (below).
             double mean_s = 0.0;
             for (int i : group) mean_s += S(cands[i].gt, cands[i].map);
-            if (mean_s / double(group.size()) < p.min_small_group_similarity) return false;
+            if (mean_s / double(group.size()) < p.min_small_group_similarity &&
+                !wallsConfirm(group, fit))
+                return false;
         }
         return true;
     };

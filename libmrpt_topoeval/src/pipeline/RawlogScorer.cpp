@@ -27,6 +27,7 @@
 #include <limits>
 #include <sstream>
 
+#include "common/clock.h"
 #include "common/error_text.h"
 #include "rawlog/RawlogReader.h"
 
@@ -36,13 +37,8 @@ namespace mrpt_topoeval
 {
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
+using internal::Clock;
+using internal::msSince;
 bool validTime(const mrpt::Clock::time_point& t) { return t != INVALID_TIMESTAMP; }
 
 /** A restamped reading lands this long after the previous one: small enough not to disturb

@@ -14,6 +14,7 @@
 #include <thread>
 #include <utility>
 
+#include "common/clock.h"
 #include "common/threads.h"
 
 namespace mrpt_topoeval
@@ -31,11 +32,8 @@ SimilarityMatrix vertexSimilarity(const TopologyGraph& gt,
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
+using internal::Clock;
+using internal::msSince;
 
 // Similarity, match and evaluation of two graphs built since `t0` (their time is "graphs").
 QualityReport scoreGraphs(const TopologyGraph& gt, const mrpt::maps::COccupancyGridMap2D& gt_grid,

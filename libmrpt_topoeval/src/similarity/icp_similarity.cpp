@@ -34,6 +34,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/clock.h"
 #include "common/threads.h"
 #include "graph/MatchView.h"
 
@@ -41,17 +42,12 @@ namespace mrpt_topoeval
 {
 namespace
 {
+using internal::Clock;
 using internal::MatchView;
+using internal::msSince;
 using internal::ViewVertex;
 using mrpt::maps::COccupancyGridMap2D;
 using mrpt::maps::CSimplePointsMap;
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
 /** Fewer obstacle points than this carry no shape to align: the pair gets 0. */
 constexpr std::size_t kMinCloudPoints = 3;
 /** The moving cloud of ICP is thinned on a coarser cell lattice until it has at most this

@@ -144,6 +144,24 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * shift has none. 8 m: the low end of the range that gives the same corpus results (8 to
      * 15 m; 6 m misses a part, doc/matching.md) [m]. */
     double part_pivot_distance_m = 8.0;
+    /** A further group smaller than min_group_vertices and less similar than
+     * min_small_group_similarity (a part whose vertices' attributes changed at the cut: its
+     * junctions lost or gained the edges across it) is still accepted when the obstacles
+     * around it agree under its rigid fit: at least this share of the wall points around its
+     * vertices lie on the other map's walls, counted from each map, the smaller share taken.
+     * 0.6 and 0.7 give the same corpus, 0.5 admits a chance group in a column hall's lattice,
+     * 0.8 finds no part (doc/matching.md); 0 turns the rule off [0..1]. */
+    double min_part_wall_agreement = 0.7;
+    /** ... and when the walls pin the fit: moved by twice the wall tolerance in any of 8
+     * directions, the fit keeps at most this share of its agreement. A straight corridor's
+     * walls fit themselves anywhere along it (and turned by 180 degrees): 1.01-1.06 for the
+     * chance groups of the corpus's corridors, 0.79-0.87 for the true parts found [ratio]. */
+    double max_wall_pinning = 0.9;
+    /** The wall points around a group: those within each vertex's clearance plus this [m]. */
+    double wall_margin_m = 1.0;
+    /** A wall point agrees when the other map has one within this, or within 1.5 cells of
+     * the coarser map (the validation's truth check's tolerance) [m]. */
+    double wall_tolerance_m = 0.15;
     /** Growing: an unmatched vertex near a group is paired where the rigid fit of the group's
      * pairs within this radius of it predicts its partner [m]; */
     double growing_radius_m = 12.0;

@@ -1,0 +1,145 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#include "matching/wall_agreement.h"
+
+#include <mrpt/core/bits_math.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace mrpt_topoeval::internal
+{
+namespace
+{
+std::int64_t bucketKey(long ix, long iy)
+{
+    return std::int64_t(ix) * (std::int64_t(1) << 32) + std::int64_t(iy);
+}
+}  // namespace
+
+WallIndex::WallIndex(const std::vector<Eigen::Vector2f>& points, double bucket_m)
+    : m_bucket(bucket_m)
+{
+    std::vector<std::int64_t> keys(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+        keys[i] = bucketKey(cell(points[i].x()), cell(points[i].y()));
+    std::vector<std::size_t> order(points.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+    m_points.reserve(points.size());
+    m_keys.reserve(points.size());
+    for (std::size_t i : order) m_points.push_back(points[i]), m_keys.push_back(keys[i]);
+}
+
+long WallIndex::cell(double v) const { return long(std::floor(v / m_bucket)); }
+
+// Calls visit(point) for the wall points within r of p until it returns true.
+template <typename Visit>
+void WallIndex::visit(const Eigen::Vector2d& p, double r, Visit visit) const
+{
+    const long c = long(std::ceil(r / m_bucket));
+    const long cx = cell(p.x()), cy = cell(p.y());
+    const double r2 = r * r;
+    for (long dx = -c; dx <= c; ++dx)
+        for (long dy = -c; dy <= c; ++dy)
+        {
+            const auto range =
+                std::equal_range(m_keys.begin(), m_keys.end(), bucketKey(cx + dx, cy + dy));
+            for (auto it = range.first; it != range.second; ++it)
+            {
+                const Eigen::Vector2f& q = m_points[std::size_t(it - m_keys.begin())];
+                const double ex = q.x() - p.x(), ey = q.y() - p.y();
+                if (ex * ex + ey * ey <= r2 && visit(q)) return;
+            }
+        }
+}
+
+bool WallIndex::near(const Eigen::Vector2d& p, double r) const
+{
+    bool found = false;
+    visit(p, r, [&](const Eigen::Vector2f&) { return found = true; });
+    return found;
+}
+
+void WallIndex::collect(const Eigen::Vector2d& p, double r, std::vector<Eigen::Vector2d>& out) const
+{
+    visit(p, r,
+          [&](const Eigen::Vector2f& q)
+          {
+              out.emplace_back(q.x(), q.y());
+              return false;
+          });
+}
+
+namespace
+{
+/** Wall points around the given vertices, without repeats, evenly thinned to at most this
+ * many: the share is a mean, and a few hundred points give it to a few percent. */
+constexpr std::size_t kMaxWallPoints = 400;
+
+std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex& walls,
+                                         const std::vector<int>& vertices, double margin_m)
+{
+    std::vector<Eigen::Vector2d> pts;
+    for (int v : vertices)
+        walls.collect(g.vertices[v].position_m, g.vertices[v].clearance_m + margin_m, pts);
+    auto less = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+    { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
+    std::sort(pts.begin(), pts.end(), less);
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    if (pts.size() > kMaxWallPoints)
+    {
+        std::vector<Eigen::Vector2d> thin;
+        for (std::size_t k = 0; k < kMaxWallPoints; ++k)
+            thin.push_back(pts[k * pts.size() / kMaxWallPoints]);
+        pts.swap(thin);
+    }
+    return pts;
+}
+}  // namespace
+
+WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
+                            const WallIndex& gt_walls, const WallIndex& map_walls,
+                            const std::vector<std::pair<int, int>>& pairs,
+                            const Transform2D& gt_T_map, double margin_m, double tolerance_m)
+{
+    WallAgreement out;
+    std::vector<int> gv, mv;
+    for (const auto& [a, b] : pairs) gv.push_back(a), mv.push_back(b);
+    const std::vector<Eigen::Vector2d> from_gt = wallsAround(gt, gt_walls, gv, margin_m);
+    const std::vector<Eigen::Vector2d> from_map = wallsAround(map, map_walls, mv, margin_m);
+    if (from_gt.empty() || from_map.empty()) return out;
+    // The share under the fit moved by `shift` (in the ground truth's frame).
+    auto shareAt = [&](const Eigen::Vector2d& shift)
+    {
+        const double yaw = mrpt::DEG2RAD(gt_T_map.yaw_deg);
+        const double c = std::cos(yaw), s = std::sin(yaw);
+        const Eigen::Vector2d t(gt_T_map.x_m + shift.x(), gt_T_map.y_m + shift.y());
+        std::size_t hit_gt = 0, hit_map = 0;
+        for (const Eigen::Vector2d& p : from_gt)
+        {
+            const Eigen::Vector2d d = p - t;  // R^T (p - t): into the map's frame
+            hit_gt += map_walls.near({c * d.x() + s * d.y(), -s * d.x() + c * d.y()}, tolerance_m);
+        }
+        for (const Eigen::Vector2d& q : from_map)
+            hit_map += gt_walls.near({c * q.x() - s * q.y() + t.x(), s * q.x() + c * q.y() + t.y()},
+                                     tolerance_m);
+        return std::min(double(hit_gt) / double(from_gt.size()),
+                        double(hit_map) / double(from_map.size()));
+    };
+    out.share = shareAt(Eigen::Vector2d::Zero());
+    if (!(out.share > 0.0)) return out;
+    double moved = 0.0;
+    for (int k = 0; k < 8; ++k)
+    {
+        const double a = k * M_PI / 4.0;
+        moved =
+            std::max(moved, shareAt(2.0 * tolerance_m * Eigen::Vector2d(std::cos(a), std::sin(a))));
+    }
+    out.pinning = moved / out.share;
+    return out;
+}
+
+}  // namespace mrpt_topoeval::internal

@@ -1,0 +1,57 @@
+/* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
+#pragma once
+
+// Does a group's rigid fit put one map's walls on the other's, and do the walls pin that fit?
+// The check of a small further group whose attributes changed at a break (doc/matching.md,
+// "Walls of a small part").
+
+#include <mrpt_topoeval/TopologyGraph.h>
+#include <mrpt_topoeval/geometry/Transform2D.h>
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace mrpt_topoeval::internal
+{
+/** A graph's wall points bucketed on a square grid, for "is there a wall point within r of p". */
+class WallIndex
+{
+public:
+    WallIndex(const std::vector<Eigen::Vector2f>& points, double bucket_m);
+    /** True if a wall point lies within r of p. */
+    bool near(const Eigen::Vector2d& p, double r) const;
+    /** Appends the wall points within r of p to out. */
+    void collect(const Eigen::Vector2d& p, double r, std::vector<Eigen::Vector2d>& out) const;
+    bool empty() const { return m_points.empty(); }
+
+private:
+    long cell(double v) const;
+    template <typename Visit>
+    void visit(const Eigen::Vector2d& p, double r, Visit visit) const;
+    std::vector<Eigen::Vector2f> m_points;  //!< Sorted by bucket.
+    std::vector<std::int64_t> m_keys;       //!< The bucket of each point, sorted.
+    double m_bucket;
+};
+
+/** How well the walls around a group agree under its rigid fit. */
+struct WallAgreement
+{
+    /** Of the wall points around the group's vertices (within each vertex's clearance +
+     * margin), the share that the fit puts within the tolerance of the other map's wall points;
+     * counted from each map, the smaller share. 0 when either map has no wall points there. */
+    double share = 0.0;
+    /** The largest share kept when the fit is moved by twice the tolerance in any of 8
+     * directions, over `share`: near 1 when the walls do not pin the fit (a straight corridor
+     * fits itself anywhere along it), about 0.5-0.9 when they do. */
+    double pinning = 1.0;
+};
+
+/** The agreement of the walls around `pairs` (ground-truth vertex, map vertex) under
+ * `gt_T_map` (map to ground truth). */
+WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
+                            const WallIndex& gt_walls, const WallIndex& map_walls,
+                            const std::vector<std::pair<int, int>>& pairs,
+                            const Transform2D& gt_T_map, double margin_m, double tolerance_m);
+
+}  // namespace mrpt_topoeval::internal
