@@ -343,10 +343,17 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
                        (at(x - 1, y) == kFree || at(x + 1, y) == kFree || at(x, y - 1) == kFree ||
                         at(x, y + 1) == kFree);
             if (site) vin.sites.emplace_back(cx, cy);
-            if (site && c == kOccupied)
-                graph.wall_points_m.emplace_back(float(grid.idx2x(cx)), float(grid.idx2y(cy)));
         }
     stats.sites = vin.sites.size();
+    // The occupied sites are the walls the matcher checks a small part against (doc/
+    // matching.md); counted first, so that a large map's copy takes no spare capacity.
+    auto occupiedSite = [&](const Eigen::Vector2i& c)
+    { return at(c.x() - ox, c.y() - oy) == kOccupied; };
+    graph.wall_points_m.reserve(
+        std::size_t(std::count_if(vin.sites.begin(), vin.sites.end(), occupiedSite)));
+    for (const Eigen::Vector2i& c : vin.sites)
+        if (occupiedSite(c))
+            graph.wall_points_m.emplace_back(float(grid.idx2x(c.x())), float(grid.idx2y(c.y())));
     timer.lap("sites");
 
     if (graph.map.occupied_cells == 0 || graph.map.free_cells == 0)
