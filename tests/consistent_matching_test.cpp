@@ -587,7 +587,7 @@ TEST(ConsistentMatching, WallsOfASmallPartAgreeAndPinItsFit)
     {
         const TopologyGraph gt = wallsAndOneVertex(walls, clearance, T);
         const TopologyGraph map = wallsAndOneVertex(walls, clearance, none);
-        const WallIndex gi(gt.wall_points_m, 0.5), mi(map.wall_points_m, 0.5);
+        const WallIndex gi(gt.wall_points_m), mi(map.wall_points_m);
         return internal::wallAgreement(gt, map, gi, mi, pair, fit, 1.0, 0.15);
     };
     // The right fit puts every wall on a wall; moved by 0.3 m along an axis it keeps only
@@ -607,6 +607,6 @@ TEST(ConsistentMatching, WallsOfASmallPartAgreeAndPinItsFit)
     EXPECT_GT(corridor_right.pinning, GraphMatcherParameters{}.max_wall_pinning);
     // No walls: nothing agrees.
     const TopologyGraph bare = wallsAndOneVertex({}, 1.0, none);
-    const WallIndex empty(bare.wall_points_m, 0.5);
+    const WallIndex empty(bare.wall_points_m);
     EXPECT_EQ(internal::wallAgreement(bare, bare, empty, empty, pair, none, 1.0, 0.15).share, 0.0);
 }

@@ -26,9 +26,6 @@ namespace mrpt_topoeval::internal
 {
 namespace
 {
-/** Bucket of the wall-point index [m]: a few wall tolerances, so a query reads 9 buckets. */
-constexpr double kWallBucketM = 0.5;
-
 struct Candidate
 {
     int gt = -1, map = -1;
@@ -343,15 +340,15 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     // attributes changed at the cut) is kept when the walls around it agree under its fit and
     // pin it (min_part_wall_agreement, max_wall_pinning). The walls are indexed on first use.
     std::optional<WallIndex> gt_walls, map_walls;
+    const double wall_tolerance =
+        std::max(p.wall_tolerance_m, 1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
     auto wallsConfirm = [&](const std::vector<int>& group, const Transform2D& fit)
     {
         if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
-        if (!gt_walls) gt_walls.emplace(gt.wall_points_m, kWallBucketM);
-        if (!map_walls) map_walls.emplace(map.wall_points_m, kWallBucketM);
+        if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
+        if (!map_walls) map_walls.emplace(map.wall_points_m);
         std::vector<std::pair<int, int>> pairs;
         for (int i : group) pairs.emplace_back(cands[i].gt, cands[i].map);
-        const double wall_tolerance =
-            std::max(p.wall_tolerance_m, 1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
         const WallAgreement walls = wallAgreement(gt, map, *gt_walls, *map_walls, pairs, fit,
                                                   p.wall_margin_m, wall_tolerance);
         return walls.share >= p.min_part_wall_agreement && walls.pinning <= p.max_wall_pinning;

@@ -4,73 +4,30 @@
 #include <mrpt/core/bits_math.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <numeric>
 
 namespace mrpt_topoeval::internal
 {
-namespace
+WallIndex::WallIndex(const std::vector<Eigen::Vector2f>& points)
 {
-std::int64_t bucketKey(long ix, long iy)
-{
-    return std::int64_t(ix) * (std::int64_t(1) << 32) + std::int64_t(iy);
-}
-}  // namespace
-
-WallIndex::WallIndex(const std::vector<Eigen::Vector2f>& points, double bucket_m)
-    : m_bucket(bucket_m)
-{
-    std::vector<std::int64_t> keys(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i)
-        keys[i] = bucketKey(cell(points[i].x()), cell(points[i].y()));
-    std::vector<std::size_t> order(points.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
     m_points.reserve(points.size());
-    m_keys.reserve(points.size());
-    for (std::size_t i : order) m_points.push_back(points[i]), m_keys.push_back(keys[i]);
-}
-
-long WallIndex::cell(double v) const { return long(std::floor(v / m_bucket)); }
-
-// Calls visit(point) for the wall points within r of p until it returns true.
-template <typename Visit>
-void WallIndex::visit(const Eigen::Vector2d& p, double r, Visit visit) const
-{
-    const long c = long(std::ceil(r / m_bucket));
-    const long cx = cell(p.x()), cy = cell(p.y());
-    const double r2 = r * r;
-    for (long dx = -c; dx <= c; ++dx)
-        for (long dy = -c; dy <= c; ++dy)
-        {
-            const auto range =
-                std::equal_range(m_keys.begin(), m_keys.end(), bucketKey(cx + dx, cy + dy));
-            for (auto it = range.first; it != range.second; ++it)
-            {
-                const Eigen::Vector2f& q = m_points[std::size_t(it - m_keys.begin())];
-                const double ex = q.x() - p.x(), ey = q.y() - p.y();
-                if (ex * ex + ey * ey <= r2 && visit(q)) return;
-            }
-        }
+    for (const Eigen::Vector2f& q : points) m_points.insertPointFast(q.x(), q.y());
+    m_points.kdTreeEnsureIndexBuilt2D();
 }
 
 bool WallIndex::near(const Eigen::Vector2d& p, double r) const
 {
-    bool found = false;
-    visit(p, r, [&](const Eigen::Vector2f&) { return found = true; });
-    return found;
+    return !empty() &&
+           m_points.kdTreeClosestPoint2DsqrError(float(p.x()), float(p.y())) <= float(r * r);
 }
 
 void WallIndex::collect(const Eigen::Vector2d& p, double r, std::vector<Eigen::Vector2d>& out) const
 {
-    visit(p, r,
-          [&](const Eigen::Vector2f& q)
-          {
-              out.emplace_back(q.x(), q.y());
-              return false;
-          });
+    std::vector<nanoflann::ResultItem<std::size_t, float>> found;
+    m_points.kdTreeRadiusSearch2D(float(p.x()), float(p.y()), float(r * r), found);
+    const auto& xs = m_points.getPointsBufferRef_x();
+    const auto& ys = m_points.getPointsBufferRef_y();
+    for (const auto& f : found) out.emplace_back(xs[f.first], ys[f.first]);
 }
 
 namespace
@@ -112,10 +69,10 @@ WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
     const std::vector<Eigen::Vector2d> from_map = wallsAround(map, map_walls, mv, margin_m);
     if (from_gt.empty() || from_map.empty()) return out;
     // The share under the fit moved by `shift` (in the ground truth's frame).
+    const double yaw = mrpt::DEG2RAD(gt_T_map.yaw_deg);
+    const double c = std::cos(yaw), s = std::sin(yaw);
     auto shareAt = [&](const Eigen::Vector2d& shift)
     {
-        const double yaw = mrpt::DEG2RAD(gt_T_map.yaw_deg);
-        const double c = std::cos(yaw), s = std::sin(yaw);
         const Eigen::Vector2d t(gt_T_map.x_m + shift.x(), gt_T_map.y_m + shift.y());
         std::size_t hit_gt = 0, hit_map = 0;
         for (const Eigen::Vector2d& p : from_gt)

@@ -5,20 +5,21 @@
 // The check of a small further group whose attributes changed at a break (doc/matching.md,
 // "Walls of a small part").
 
+#include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt_topoeval/TopologyGraph.h>
 #include <mrpt_topoeval/geometry/Transform2D.h>
 
-#include <cstdint>
 #include <utility>
 #include <vector>
 
 namespace mrpt_topoeval::internal
 {
-/** A graph's wall points bucketed on a square grid, for "is there a wall point within r of p". */
+/** A graph's wall points in MRPT's KD-tree (`CSimplePointsMap`, nanoflann), for "is there a wall
+ * point within r of p" and "the wall points within r of p". */
 class WallIndex
 {
 public:
-    WallIndex(const std::vector<Eigen::Vector2f>& points, double bucket_m);
+    explicit WallIndex(const std::vector<Eigen::Vector2f>& points);
     /** True if a wall point lies within r of p. */
     bool near(const Eigen::Vector2d& p, double r) const;
     /** Appends the wall points within r of p to out. */
@@ -26,12 +27,7 @@ public:
     bool empty() const { return m_points.empty(); }
 
 private:
-    long cell(double v) const;
-    template <typename Visit>
-    void visit(const Eigen::Vector2d& p, double r, Visit visit) const;
-    std::vector<Eigen::Vector2f> m_points;  //!< Sorted by bucket.
-    std::vector<std::int64_t> m_keys;       //!< The bucket of each point, sorted.
-    double m_bucket;
+    mrpt::maps::CSimplePointsMap m_points;
 };
 
 /** How well the walls around a group agree under its rigid fit. */
