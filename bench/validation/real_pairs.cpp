@@ -305,9 +305,17 @@ TruthMapping localPoseFitMapping(Points est, Points truth, int k)
  * placement with the most votes within kTruthAgreeM of it wins, and the mean of those votes'
  * placements is the point's. With no such keyframe the nearest one places it. On the Intel map
  * the share of occupied cells the truth puts on a reference wall rose from 0.738 to 0.955
- * (session 9, doc/validation.md). */
+ * (session 9, doc/validation.md).
+ *
+ * A topology vertex takes the walls around it, from its clearance to kTruthVertexRingOutM
+ * farther (the matcher's wall margin), not only its nearest wall: where a later pass drew one
+ * stray wall into a room, that wall is the vertex's nearest and the ring at 0.25 m held only its
+ * keyframe (Intel map vertex 11: 3 endpoints of one late keyframe placed it 11.5 m from the
+ * dead end that some 600 endpoints of 20 keyframes within 1.5 m put it 0.25 m from; session 12,
+ * doc/validation.md). */
 constexpr double kTruthMaxRadiusM = 3.0;
 constexpr double kTruthRingInM = 0.15, kTruthRingOutM = 0.25;
+constexpr double kTruthVertexRingOutM = 1.0;
 constexpr int kTruthMinEndpoints = 3;
 constexpr double kTruthAgreeM = 1.0;
 
@@ -347,7 +355,8 @@ KeyframeMappings keyframeMapping(std::vector<CPose2D> est, std::vector<CPose2D> 
         }
     std::shared_ptr<const Index> cix = ix;
     // The placement of p whose nearest obstacles lie d0 away.
-    auto placeAt = [cix](const Eigen::Vector2d& p, double d0) -> std::optional<Eigen::Vector2d>
+    auto placeAt = [cix](const Eigen::Vector2d& p, double d0,
+                         double ring_out) -> std::optional<Eigen::Vector2d>
     {
         const Index& x = *cix;
         if (x.est.empty()) return std::nullopt;
@@ -375,7 +384,7 @@ KeyframeMappings keyframeMapping(std::vector<CPose2D> est, std::vector<CPose2D> 
             }
         std::map<int, int> votes;  // keyframe -> its endpoints on the obstacles nearest to p
         for (const auto& [d, k] : near)
-            if (d >= d0 - kTruthRingInM && d <= d0 + kTruthRingOutM) ++votes[k];
+            if (d >= d0 - kTruthRingInM && d <= d0 + ring_out) ++votes[k];
         for (auto it = votes.begin(); it != votes.end();)
             it = it->second < kTruthMinEndpoints ? votes.erase(it) : std::next(it);
         if (votes.empty())
@@ -409,8 +418,10 @@ KeyframeMappings keyframeMapping(std::vector<CPose2D> est, std::vector<CPose2D> 
         return Eigen::Vector2d(sum / double(best_support));
     };
     KeyframeMappings out;
-    out.point = [cix, placeAt](const Eigen::Vector2d& p) { return placeAt(p, cix->walls->at(p)); };
-    out.vertex = placeAt;
+    out.point = [cix, placeAt](const Eigen::Vector2d& p)
+    { return placeAt(p, cix->walls->at(p), kTruthRingOutM); };
+    out.vertex = [placeAt](const Eigen::Vector2d& p, double d0)
+    { return placeAt(p, d0, kTruthVertexRingOutM); };
     return out;
 }
 

@@ -134,10 +134,21 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             line << "gt " << p.ground_truth << " -> map " << p.map << " ("
                  << (p.stage == MatchStage::NeighbourGrowing ? "grown" : "core") << "), ";
             if (q)
+            {
                 line << "truth puts map " << p.map << " "
                      << (*q - gt.vertices[static_cast<std::size_t>(p.ground_truth)].position_m)
                             .norm()
                      << " m from gt " << p.ground_truth;
+                // The ground-truth vertex the truth puts nearest: a neighbour taken in its place,
+                // or none near where the map's vertex has no counterpart.
+                int nearest = -1;
+                double nearest_d = std::numeric_limits<double>::infinity();
+                for (const auto& g : gt.vertices)
+                    if (!g.spurious && (*q - g.position_m).norm() < nearest_d)
+                        nearest_d = (*q - g.position_m).norm(), nearest = g.id;
+                if (nearest >= 0)
+                    line << "; nearest to it: gt " << nearest << " at " << nearest_d << " m";
+            }
             else
                 line << "the truth does not place map " << p.map;
             s.false_pairs.push_back(line.str());
