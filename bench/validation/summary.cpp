@@ -230,6 +230,8 @@ Summary summarize(const std::vector<CaseResult>& results)
                     {
                         ++f.inversions;
                         f.inversions_less_complete += own.counterparts[i] < own.counterparts[j];
+                        f.inversions_within_a_cell +=
+                            own.damage[i] - own.damage[j] < kResolvableDistortionM;
                     }
                     f.ties += own.quality[i] == own.quality[j];
                 }
@@ -267,14 +269,14 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
     row(s.pooled_generated);
     row(s.pooled);
     o << "\nfamily             ladder  points  spearman(severity, quality)  per building (mean "
-         "of)  inversions (less complete)  ties\n";
+         "of)  inversions (less complete, within a cell)  ties\n";
     for (const auto& f : s.ladders)
     {
         char buf[200];
-        std::snprintf(buf, sizeof buf, "%-18s %-7s %6zu  %-28s %-5s (%zu)%12zu (%zu)%19zu\n",
+        std::snprintf(buf, sizeof buf, "%-18s %-7s %6zu  %-28s %-5s (%zu)%12zu (%zu, %zu)%32zu\n",
                       f.family.c_str(), f.ladder.c_str(), f.points, num(f.spearman).c_str(),
                       num(f.spearman_per_building).c_str(), f.buildings, f.inversions,
-                      f.inversions_less_complete, f.ties);
+                      f.inversions_less_complete, f.inversions_within_a_cell, f.ties);
         o << buf;
     }
     for (const auto& a : s.kinds)

@@ -49,6 +49,11 @@ struct Aggregate
 
 Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*>& cases);
 
+/** Two maps whose measured distortion differs by less than this are not ordered by it [m]: one
+ * cell of the generated maps (0.05 m). Session 12 found every inversion of the angled and
+ * corridor-office SLAM ladders between such maps (gaps 0.004-0.033 m; doc/validation.md). */
+constexpr double kResolvableDistortionM = 0.05;
+
 /** Spearman's rank correlation (ties get mean ranks); NaN for fewer than 3 points or no spread. */
 double spearman(const std::vector<double>& a, const std::vector<double>& b);
 
@@ -71,6 +76,10 @@ struct FamilyLadder
      * also the less complete one (fewer ground-truth vertices with a counterpart, by the truth):
      * each map is worse in one respect, and the ladder's severity sees only the other. */
     std::size_t inversions = 0, inversions_less_complete = 0;
+    /** Of the inversions, those between maps whose severities differ by less than
+     * kResolvableDistortionM (on the slam ladder: two maps whose measured distortions lie within
+     * one cell of each other, which the truth does not order; none on the breaks ladder). */
+    std::size_t inversions_within_a_cell = 0;
     /** Within each building, the pairs of maps of different severity with the same quality
      * (two levels of which nothing is matched both score 0). */
     std::size_t ties = 0;

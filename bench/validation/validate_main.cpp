@@ -228,6 +228,8 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("inversions").value(static_cast<std::uint64_t>(f.inversions));
         j.key("inversions_less_complete")
             .value(static_cast<std::uint64_t>(f.inversions_less_complete));
+        j.key("inversions_within_a_cell")
+            .value(static_cast<std::uint64_t>(f.inversions_within_a_cell));
         j.key("ties").value(static_cast<std::uint64_t>(f.ties));
         j.endObject();
     }
