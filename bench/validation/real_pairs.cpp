@@ -298,8 +298,8 @@ TruthMapping localPoseFitMapping(Points est, Points truth, int k)
  * that did not draw the walls around the point. So the scan endpoints, in the map's frame, that
  * lie as far from the point as its nearest obstacles (from kTruthRingInM nearer to kTruthRingOutM
  * farther, within kTruthMaxRadiusM) are taken as the scans' share in drawing it: a topology
- * vertex's walls at its clearance (the graph's, which ignores the specks a raw distance would
- * find), a wall cell's own wall at 0 (the map's nearest occupied cell for other points; a person
+ * vertex's walls from its clearance on (the graph's, which ignores the specks a raw distance
+ * would find; below), a wall cell's own wall at 0 (the map's nearest occupied cell for other points; a person
  * one scan saw in a corridor is nearer than the walls and is left out). Each keyframe with at least
  * kTruthMinEndpoints of them votes with their number for its placement of the point; the
  * placement with the most votes within kTruthAgreeM of it wins, and the mean of those votes'
@@ -354,7 +354,8 @@ KeyframeMappings keyframeMapping(std::vector<CPose2D> est, std::vector<CPose2D> 
             ix->buckets[ix->key(q)].emplace_back(q, static_cast<int>(k));
         }
     std::shared_ptr<const Index> cix = ix;
-    // The placement of p whose nearest obstacles lie d0 away.
+    // The placement of p whose nearest obstacles lie d0 away, by the scan endpoints from
+    // kTruthRingInM nearer to ring_out farther than d0.
     auto placeAt = [cix](const Eigen::Vector2d& p, double d0,
                          double ring_out) -> std::optional<Eigen::Vector2d>
     {
