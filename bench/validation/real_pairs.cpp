@@ -299,12 +299,12 @@ TruthMapping localPoseFitMapping(Points est, Points truth, int k)
  * lie as far from the point as its nearest obstacles (from kTruthRingInM nearer to kTruthRingOutM
  * farther, within kTruthMaxRadiusM) are taken as the scans' share in drawing it: a topology
  * vertex's walls from its clearance on (the graph's, which ignores the specks a raw distance
- * would find; below), a wall cell's own wall at 0 (the map's nearest occupied cell for other points; a person
- * one scan saw in a corridor is nearer than the walls and is left out). Each keyframe with at least
- * kTruthMinEndpoints of them votes with their number for its placement of the point; the
- * placement with the most votes within kTruthAgreeM of it wins, and the mean of those votes'
- * placements is the point's. With no such keyframe the nearest one places it. On the Intel map
- * the share of occupied cells the truth puts on a reference wall rose from 0.738 to 0.955
+ * would find; below), a wall cell's own wall at 0 (the map's nearest occupied cell for other
+ * points; a person one scan saw in a corridor is nearer than the walls and is left out). Each
+ * keyframe with at least kTruthMinEndpoints of them votes with their number for its placement of
+ * the point; the placement with the most votes within kTruthAgreeM of it wins, and the mean of
+ * those votes' placements is the point's. With no such keyframe the nearest one places it. On the
+ * Intel map the share of occupied cells the truth puts on a reference wall rose from 0.738 to 0.955
  * (session 9, doc/validation.md).
  *
  * A topology vertex takes the walls around it, from its clearance to kTruthVertexRingOutM
