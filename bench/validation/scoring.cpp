@@ -144,8 +144,10 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                 int nearest = -1;
                 double nearest_d = std::numeric_limits<double>::infinity();
                 for (const auto& g : gt.vertices)
-                    if (!g.spurious && (*q - g.position_m).norm() < nearest_d)
-                        nearest_d = (*q - g.position_m).norm(), nearest = g.id;
+                {
+                    const double d = (*q - g.position_m).norm();
+                    if (!g.spurious && d < nearest_d) nearest_d = d, nearest = g.id;
+                }
                 if (nearest >= 0)
                     line << "; nearest to it: gt " << nearest << " at " << nearest_d << " m";
             }

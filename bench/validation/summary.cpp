@@ -230,7 +230,9 @@ Summary summarize(const std::vector<CaseResult>& results)
                     {
                         ++f.inversions;
                         f.inversions_less_complete += own.counterparts[i] < own.counterparts[j];
+                        // Only the slam ladder's severity is a distortion in metres.
                         f.inversions_within_a_cell +=
+                            key.second == "slam" &&
                             own.damage[i] - own.damage[j] < kResolvableDistortionM;
                     }
                     f.ties += own.quality[i] == own.quality[j];

@@ -76,9 +76,9 @@ struct FamilyLadder
      * also the less complete one (fewer ground-truth vertices with a counterpart, by the truth):
      * each map is worse in one respect, and the ladder's severity sees only the other. */
     std::size_t inversions = 0, inversions_less_complete = 0;
-    /** Of the inversions, those between maps whose severities differ by less than
-     * kResolvableDistortionM (on the slam ladder: two maps whose measured distortions lie within
-     * one cell of each other, which the truth does not order; none on the breaks ladder). */
+    /** On the slam ladder, the inversions between maps whose measured distortions differ by
+     * less than kResolvableDistortionM (within one cell of each other: the truth does not order
+     * them); 0 on the breaks ladder. */
     std::size_t inversions_within_a_cell = 0;
     /** Within each building, the pairs of maps of different severity with the same quality
      * (two levels of which nothing is matched both score 0). */
