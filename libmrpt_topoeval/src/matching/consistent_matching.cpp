@@ -423,9 +423,14 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             // A big group's neighbour pairs may all lie far from the pivot of its turn, where
             // the turn changes their distances by more than part_bridge_ratio (a cut across a
             // whole building, turned about its one end). Where the robot crossed the break
-            // both fits place the map alike: that pivot lies next to both groups.
-            for (std::size_t k = 0;
-                 k < out.cores.size() && neighbour && !bridge && int(group.size()) >= min_size; ++k)
+            // both fits place the map alike: that pivot lies next to both groups. A small group
+            // may lack a neighbour pair for the same reason, or because the vertices at its cut
+            // changed (a junction that lost an edge to the cut is no candidate): it bridges by
+            // its pivot too, when its walls also agree and pin its fit (three pairs are weaker
+            // evidence than five; doc/matching.md, "The pivot of a small part").
+            const bool small = int(group.size()) < min_size;
+            bool by_pivot = false;
+            for (std::size_t k = 0; k < out.cores.size() && !bridge && (small || neighbour); ++k)
             {
                 const auto pivot = agreementPoint(fit, core_fits[k]);
                 if (!pivot) continue;
@@ -435,8 +440,10 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                                      [&](int i) { return near(cands[i].gt); }) &&
                          std::any_of(out.cores[k].begin(), out.cores[k].end(),
                                      [&](const auto& pair) { return near(pair.first); });
+                by_pivot = bridge;
             }
-            if (int(group.size()) < min_size ? !bridge : (neighbour && !bridge)) return false;
+            if (small ? !bridge : (neighbour && !bridge)) return false;
+            if (small && by_pivot && !wallsConfirm(group, fit)) return false;
         }
         if (int(group.size()) < p.min_group_vertices)
         {
