@@ -80,7 +80,8 @@ TOPOEVAL_PARAMETER_TABLE(
          "consistent: a further group's neighbour pairs keep their distance within this",
          atLeast(0)),
     real(TOPOEVAL_KEY(part_pivot_distance_m), "m",
-         "consistent: a big further group bridges when its turn's pivot is this near both groups",
+         "consistent: a further group bridges when its turn's pivot is this near both groups "
+         "(a small one if its walls agree too)",
          atLeast(0)),
     real(TOPOEVAL_KEY(min_part_wall_agreement), "0..1",
          "consistent: a small further group less similar needs this share of its walls "
@@ -88,6 +89,11 @@ TOPOEVAL_PARAMETER_TABLE(
          atLeast(0).atMost(1)),
     real(TOPOEVAL_KEY(max_wall_pinning), "ratio",
          "consistent: ... whose fit moved by 2 wall tolerances keeps at most this of it", above(0)),
+    real(TOPOEVAL_KEY(min_first_group_wall_agreement), "0..1",
+         "consistent: a small first group needs this share of its walls agreeing (0: off)",
+         atLeast(0).atMost(1)),
+    integer(TOPOEVAL_KEY(first_group_wall_check_pairs), "1",
+            "consistent: ... a first group of fewer pairs than this", atLeast(0)),
     real(TOPOEVAL_KEY(wall_margin_m), "m",
          "consistent: walls within a vertex's clearance plus this are compared", atLeast(0)),
     real(TOPOEVAL_KEY(wall_tolerance_m), "m",

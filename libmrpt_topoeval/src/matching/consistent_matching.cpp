@@ -565,11 +565,30 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             const double density = m > 1.0 ? double(search.edges()) / (0.5 * m * (m - 1.0)) : 0.0;
             const double log_nfa = log10FalseAlarms(m, double(clique.size()), density);
             ok = log_nfa <= std::log10(p.max_false_alarms);
+            // A small significant group must also have walls that agree under its fit: the
+            // a contrario count takes every consistent pair as a chance agreement, but two
+            // buildings of one style share room sizes and corridor spacings, and so chance
+            // groups of 5-6 pairs (held-out corpus seeds: wall shares 0.28-0.49; true first
+            // groups of this size 0.51 and more; doc/matching.md).
+            double wall_share = -1.0;
+            if (ok && int(clique.size()) < p.first_group_wall_check_pairs &&
+                p.min_first_group_wall_agreement > 0.0)
+            {
+                if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
+                if (!map_walls) map_walls.emplace(map.wall_points_m);
+                std::vector<std::pair<int, int>> pairs;
+                for (int i : clique) pairs.emplace_back(cands[i].gt, cands[i].map);
+                wall_share = wallAgreement(gt, map, *gt_walls, *map_walls, pairs,
+                                           fitOf(clique, nullptr), p.wall_margin_m, wall_tolerance)
+                                 .share;
+                ok = wall_share >= p.min_first_group_wall_agreement;
+            }
             if (!ok && clique.size() > out.refused_size)
             {
                 out.refused_size = clique.size();
                 out.refused_false_alarms = std::pow(10.0, log_nfa);
                 out.refused_candidates = pool.size();
+                out.refused_wall_share = wall_share;
             }
         }
         if (ok) accept(clique);

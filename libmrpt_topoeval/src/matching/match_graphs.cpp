@@ -101,7 +101,19 @@ void matchConsistent(const TopologyGraph& ground_truth, const TopologyGraph& map
     const std::string graphs = " candidate pairs (graphs of " + std::to_string(ctx.gt.numActive()) +
                                " and " + std::to_string(ctx.map.numActive()) +
                                " matchable vertices): ";
-    if (found.refused_size > 0)
+    if (found.refused_size > 0 && found.refused_wall_share >= 0.0)
+    {
+        std::ostringstream share;
+        share << std::setprecision(2) << found.refused_wall_share;
+        match.messages.push_back(
+            "the biggest significant group of geometrically consistent pairs (" +
+            std::to_string(found.refused_size) + ") among " +
+            std::to_string(found.refused_candidates) + graphs + "only a share of " + share.str() +
+            " of the walls around it agree under its fit, less than [GraphMatcher] "
+            "min_first_group_wall_agreement asks; the maps share too little structure to be "
+            "matched");
+    }
+    else if (found.refused_size > 0)
     {
         std::ostringstream nfa;
         nfa << std::setprecision(2) << found.refused_false_alarms;
