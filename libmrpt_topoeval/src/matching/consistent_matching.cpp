@@ -338,19 +338,24 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     std::vector<Transform2D> core_fits;
     // A further group less similar than a small group must be (a part whose vertices'
     // attributes changed at the cut) is kept when the walls around it agree under its fit and
-    // pin it (min_part_wall_agreement, max_wall_pinning). The walls are indexed on first use.
+    // pin it (min_part_wall_agreement, max_wall_pinning); a small first group needs walls that
+    // agree too (min_first_group_wall_agreement, below). The walls are indexed on first use.
     std::optional<WallIndex> gt_walls, map_walls;
     const double wall_tolerance =
         std::max(p.wall_tolerance_m, 1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
-    auto wallsConfirm = [&](const std::vector<int>& group, const Transform2D& fit)
+    auto wallsOf = [&](const std::vector<int>& group, const Transform2D& fit)
     {
-        if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
         if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
         if (!map_walls) map_walls.emplace(map.wall_points_m);
         std::vector<std::pair<int, int>> pairs;
         for (int i : group) pairs.emplace_back(cands[i].gt, cands[i].map);
-        const WallAgreement walls = wallAgreement(gt, map, *gt_walls, *map_walls, pairs, fit,
-                                                  p.wall_margin_m, wall_tolerance);
+        return wallAgreement(gt, map, *gt_walls, *map_walls, pairs, fit, p.wall_margin_m,
+                             wall_tolerance);
+    };
+    auto wallsConfirm = [&](const std::vector<int>& group, const Transform2D& fit)
+    {
+        if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
+        const WallAgreement walls = wallsOf(group, fit);
         return walls.share >= p.min_part_wall_agreement && walls.pinning <= p.max_wall_pinning;
     };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
@@ -565,22 +570,17 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             const double density = m > 1.0 ? double(search.edges()) / (0.5 * m * (m - 1.0)) : 0.0;
             const double log_nfa = log10FalseAlarms(m, double(clique.size()), density);
             ok = log_nfa <= std::log10(p.max_false_alarms);
-            // A small significant group must also have walls that agree under its fit: the
-            // a contrario count takes every consistent pair as a chance agreement, but two
-            // buildings of one style share room sizes and corridor spacings, and so chance
-            // groups of 5-6 pairs (held-out corpus seeds: wall shares 0.28-0.49; true first
-            // groups of this size 0.51 and more; doc/matching.md).
+            // A small significant group must also have walls that agree under its fit. The
+            // a contrario count takes the candidates' agreements as independent, but two
+            // buildings of one style share room sizes and corridor spacings, which makes
+            // consistent chance groups of 5-6 pairs more likely than it says; their walls
+            // disagree (held-out corpus seeds: shares 0.28-0.49, true first groups of this
+            // size 0.51 and more; doc/matching.md, "The walls of a small first group").
             double wall_share = -1.0;
             if (ok && int(clique.size()) < p.first_group_wall_check_pairs &&
                 p.min_first_group_wall_agreement > 0.0)
             {
-                if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
-                if (!map_walls) map_walls.emplace(map.wall_points_m);
-                std::vector<std::pair<int, int>> pairs;
-                for (int i : clique) pairs.emplace_back(cands[i].gt, cands[i].map);
-                wall_share = wallAgreement(gt, map, *gt_walls, *map_walls, pairs,
-                                           fitOf(clique, nullptr), p.wall_margin_m, wall_tolerance)
-                                 .share;
+                wall_share = wallsOf(clique, fitOf(clique, nullptr)).share;
                 ok = wall_share >= p.min_first_group_wall_agreement;
             }
             if (!ok && clique.size() > out.refused_size)
