@@ -165,7 +165,7 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * walls (as for a small part, min_part_wall_agreement). Measured on held-out corpus seeds
      * 2 and 3 (doc/matching.md, "The walls of a small first group"): the chance first groups
      * between different buildings of one style and between near-twins had shares 0.28-0.49
-     * (one 0.69), the true first groups of fewer than 10 pairs 0.51 and more. The pinning test
+     * (two 0.69-0.70), the true first groups of fewer than 10 pairs 0.51 and more. The pinning test
      * is not asked here: a true first group of a broken or SLAM map is often a few decimetres
      * off its best fit, and moved it agrees more (pinning 0.99-1.20). 0 turns it off [0..1]. */
     double min_first_group_wall_agreement = 0.5;
