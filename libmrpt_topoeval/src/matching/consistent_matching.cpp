@@ -434,7 +434,7 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             // its pivot too, when its walls also agree and pin its fit (three pairs are weaker
             // evidence than five; doc/matching.md, "The pivot of a small part").
             const bool small = int(group.size()) < min_size;
-            bool by_pivot = false;
+            const bool by_neighbour = bridge;
             for (std::size_t k = 0; k < out.cores.size() && !bridge && (small || neighbour); ++k)
             {
                 const auto pivot = agreementPoint(fit, core_fits[k]);
@@ -445,10 +445,9 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
                                      [&](int i) { return near(cands[i].gt); }) &&
                          std::any_of(out.cores[k].begin(), out.cores[k].end(),
                                      [&](const auto& pair) { return near(pair.first); });
-                by_pivot = bridge;
             }
             if (small ? !bridge : (neighbour && !bridge)) return false;
-            if (small && by_pivot && !wallsConfirm(group, fit)) return false;
+            if (small && !by_neighbour && !wallsConfirm(group, fit)) return false;
         }
         if (int(group.size()) < p.min_group_vertices)
         {
