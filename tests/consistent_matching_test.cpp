@@ -342,6 +342,28 @@ TEST(ConsistentMatching, AnInsignificantFirstGroupIsRefusedAndSaysSo)
     EXPECT_FALSE(matchGraphs(ga, gb, S, trusting).pairs.empty());
 }
 
+TEST(ConsistentMatching, AFirstGroupWhoseWallsDisagreeIsRefusedAndSaysSo)
+{
+    // The two campuses above, with the significance test turned off: their chance first group
+    // of 5 pairs is then refused only by its walls, which never all agree between two
+    // buildings. Asked for every wall point (share 1), nothing is matched and the message names
+    // the share and the key, as a user's refused map would.
+    const Parameters tp = tunedParameters();
+    const COccupancyGridMap2D a = makeCampusMap(1), b = makeCampusMap(4);
+    const TopologyGraph ga = buildTopologyGraph(a, tp.graph), gb = buildTopologyGraph(b, tp.graph);
+    const SimilarityMatrix S = attributeSimilarity(ga, gb, tp.similarity);
+    GraphMatcherParameters strict = tp.matcher;
+    strict.max_false_alarms = 1e300;
+    strict.min_first_group_wall_agreement = 1.0;
+    const GraphMatch m = matchGraphs(ga, gb, S, strict);
+    EXPECT_TRUE(m.pairs.empty());
+    ASSERT_FALSE(m.messages.empty());
+    EXPECT_NE(m.messages.front().find("min_first_group_wall_agreement"), std::string::npos)
+        << m.messages.front();
+    EXPECT_NE(m.messages.front().find("only a share of 0."), std::string::npos)
+        << m.messages.front();
+}
+
 TEST(ConsistentMatching, ARoomThatIsAGraphPieceOfItsOwnIsMatched)
 {
     // A corridor with rooms at its west end, and 3 m east of its dead end, behind the wall, a

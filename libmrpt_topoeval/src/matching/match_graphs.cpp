@@ -101,30 +101,29 @@ void matchConsistent(const TopologyGraph& ground_truth, const TopologyGraph& map
     const std::string graphs = " candidate pairs (graphs of " + std::to_string(ctx.gt.numActive()) +
                                " and " + std::to_string(ctx.map.numActive()) +
                                " matchable vertices): ";
-    if (found.refused_size > 0 && found.refused_wall_share >= 0.0)
+    auto twoDigits = [](double v)
     {
-        std::ostringstream share;
-        share << std::setprecision(2) << found.refused_wall_share;
+        std::ostringstream out;
+        out << std::setprecision(2) << v;
+        return out.str();
+    };
+    const std::string too_little = "; the maps share too little structure to be matched";
+    if (found.refused_size > 0 && found.refused_wall_share >= 0.0)
         match.messages.push_back(
             "the biggest significant group of geometrically consistent pairs (" +
             std::to_string(found.refused_size) + ") among " +
-            std::to_string(found.refused_candidates) + graphs + "only a share of " + share.str() +
+            std::to_string(found.refused_candidates) + graphs + "only a share of " +
+            twoDigits(found.refused_wall_share) +
             " of the walls around it agree under its fit, less than [GraphMatcher] "
-            "min_first_group_wall_agreement asks; the maps share too little structure to be "
-            "matched");
-    }
+            "min_first_group_wall_agreement asks" +
+            too_little);
     else if (found.refused_size > 0)
-    {
-        std::ostringstream nfa;
-        nfa << std::setprecision(2) << found.refused_false_alarms;
         match.messages.push_back(
             "the biggest group of geometrically consistent pairs (" +
             std::to_string(found.refused_size) + ") is not significant among " +
             std::to_string(found.refused_candidates) + graphs +
-            "chance alone is expected to make " + nfa.str() +
-            " groups as big, more than [GraphMatcher] max_false_alarms allows; the maps share "
-            "too little structure to be matched");
-    }
+            "chance alone is expected to make " + twoDigits(found.refused_false_alarms) +
+            " groups as big, more than [GraphMatcher] max_false_alarms allows" + too_little);
     else
         match.messages.push_back("no group of at least " + std::to_string(found.min_group_size) +
                                  " geometrically consistent pairs was found among " +
