@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -64,6 +65,43 @@ COccupancyGridMap2D makeTwoRoomsMap(double res)
     s.carve(1.0, 1.0, 5.0, 5.0);  // room A, centre (3, 3)
     s.carve(5.2, 1.0, 9.2, 5.0);  // room B, centre (7.2, 3)
     s.carve(4.9, 2.5, 5.3, 3.5);  // 1 m door through the 0.2 m wall
+    return s.grid();
+}
+
+COccupancyGridMap2D makePinwheelMap(double res)
+{
+    constexpr double c = 22.0;
+    GridSketch s(2.0 * c, 2.0 * c, res);
+    // A rectangle in a wing's frame (u along the wing from the centre, v across it), turned by
+    // k quarter turns about the centre.
+    auto carve = [&](int k, double u0, double v0, double u1, double v1)
+    {
+        auto at = [&](double u, double v) -> Eigen::Vector2d
+        {
+            const std::array<Eigen::Vector2d, 4> turned = {
+                Eigen::Vector2d(u, v), {-v, u}, {-u, -v}, {v, -u}};
+            return Eigen::Vector2d(c, c) + turned[std::size_t(k)];
+        };
+        const Eigen::Vector2d a = at(u0, v0), b = at(u1, v1);
+        s.carve(a.x(), a.y(), b.x(), b.y());
+    };
+    carve(0, -3.0, -3.0, 3.0, 3.0);  // the hall
+    for (int k = 0; k < 4; ++k)
+    {
+        carve(k, 3.0, -1.0, 17.0, 1.0);  // the corridor
+        for (double u : {4.0, 8.0, 12.0})
+        {
+            carve(k, u, 1.2, u + 3.8, 5.0);        // a room on the left
+            carve(k, u + 1.5, 1.0, u + 2.5, 1.2);  // its door
+        }
+        for (double u : {5.0, 9.0})
+        {
+            carve(k, u, -5.0, u + 3.8, -1.2);        // a room on the right
+            carve(k, u + 1.4, -1.2, u + 2.4, -1.0);  // its door
+        }
+    }
+    carve(0, 17.2, -1.0, 20.5, 3.5);  // the marker room, east wing only
+    carve(0, 17.0, -0.5, 17.2, 0.5);  // its door
     return s.grid();
 }
 

@@ -56,6 +56,12 @@ mrpt::maps::COccupancyGridMap2D makeLoopWithSpurMap(double resolution_m = 0.05);
  * doors, dead-end corridors. Used where a richer graph is wanted (stability, matching). */
 mrpt::maps::COccupancyGridMap2D makeOfficeMap(double resolution_m = 0.05);
 
+/** A pinwheel floor 44 m x 44 m, symmetric under turns of 90 degrees about its centre
+ * (22, 22) but for one room: a 6 m hall in the middle, four wings 14 m long (a corridor 2 m
+ * wide, three rooms on one side and two on the other), and a marker room at the end of the east
+ * wing only. Any part of it but the east wing's end fits four places of the whole. */
+mrpt::maps::COccupancyGridMap2D makePinwheelMap(double resolution_m = 0.05);
+
 /** `src` moved rigidly by (yaw about the map centre, then shift) and resampled on a grid of
  * `resolution_m` (0 keeps the source resolution). At the same resolution each target cell
  * takes the source cell under its centre; when coarsening, a target cell is occupied if any of

@@ -201,10 +201,10 @@ std::vector<int> largestLinkedComponent(const std::vector<int>& set,
     return out;
 }
 
-}  // namespace
-
-ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGraph& map,
-                                     MatchContext& ctx)
+/** findConsistentGroups() from a given first clique (`first`, pairs (gt, map), tried before the
+ * maximum clique) or, with none, from the maximum clique; then as below. */
+ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, MatchContext& ctx,
+                           const std::vector<std::pair<int, int>>* first)
 {
     const GraphMatcherParameters& p = ctx.params;
     const SimilarityMatrix& S = ctx.similarity;
@@ -541,9 +541,45 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
         MaxClique search(adjacent, n, std::size_t(p.max_clique_steps));
         std::vector<int> clique = search.run(pool);
         out.clique_steps += search.steps();
+        if (attempt == 0 && first)
+        {
+            // A rival placement of another run's first group (below), in place of the maximum
+            // clique.
+            clique.clear();
+            for (int i : pool)
+                if (std::find(first->begin(), first->end(),
+                              std::make_pair(cands[i].gt, cands[i].map)) != first->end())
+                    clique.push_back(i);
+        }
         if (int(clique.size()) < needed()) break;
         for (int i : clique) rejected[pairKey(cands[i])] = 1;
         std::sort(clique.begin(), clique.end());
+        // Significance: the first group decides that the maps show one place. Among a few
+        // hundred candidates a group of 5 consistent pairs happens by chance (two buildings of
+        // one building code, a hall's lattice: the corpus's false first groups were all 5
+        // pairs); how big a group must be grows with the candidates. A smaller group (a small
+        // graph's) has the similarity rule instead.
+        // A small significant group must also have walls that agree under its fit. The a
+        // contrario count takes the candidates' agreements as independent, but two buildings
+        // of one style share room sizes and corridor spacings, which makes consistent chance
+        // groups of 5-6 pairs more likely than it says; their walls disagree (held-out corpus
+        // seeds: shares 0.28-0.49, true first groups of this size 0.51 and more;
+        // doc/matching.md, "The walls of a small first group").
+        const double m = double(pool.size());
+        const double density = m > 1.0 ? double(search.edges()) / (0.5 * m * (m - 1.0)) : 0.0;
+        double log_nfa = 0.0, wall_share = -1.0;
+        auto significant = [&](const std::vector<int>& group)
+        {
+            wall_share = -1.0;
+            if (int(group.size()) < p.min_group_vertices) return true;
+            log_nfa = log10FalseAlarms(m, double(group.size()), density);
+            if (log_nfa > std::log10(p.max_false_alarms)) return false;
+            if (int(group.size()) >= p.first_group_wall_check_pairs ||
+                !(p.min_first_group_wall_agreement > 0.0))
+                return true;
+            wall_share = wallsOf(group, fitOf(group, nullptr)).share;
+            return wall_share >= p.min_first_group_wall_agreement;
+        };
         // A clique that mixes two parts (near a pivot their distances agree) settles into
         // neither: its fit is a compromise and dropping the worst pairs drops true ones. Then
         // the best consensus of the clique's own pairs may still be a group; not confirmed by
@@ -558,36 +594,57 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
             for (int i : clique) mean_s += S(cands[i].gt, cands[i].map);
             ok = !clique.empty() && mean_s / double(clique.size()) >= p.min_small_group_similarity;
         }
-        if (ok && int(clique.size()) >= p.min_group_vertices)
+        if (ok)
         {
-            // Significance: the first group decides that the maps show one place. Among a few
-            // hundred candidates a group of 5 consistent pairs happens by chance (two buildings
-            // of one building code, a hall's lattice: the corpus's false first groups were all
-            // 5 pairs); how big a group must be grows with the candidates. A smaller group
-            // (a small graph's) has the similarity rule instead.
-            const double m = double(pool.size());
-            const double density = m > 1.0 ? double(search.edges()) / (0.5 * m * (m - 1.0)) : 0.0;
-            const double log_nfa = log10FalseAlarms(m, double(clique.size()), density);
-            ok = log_nfa <= std::log10(p.max_false_alarms);
-            // A small significant group must also have walls that agree under its fit. The
-            // a contrario count takes the candidates' agreements as independent, but two
-            // buildings of one style share room sizes and corridor spacings, which makes
-            // consistent chance groups of 5-6 pairs more likely than it says; their walls
-            // disagree (held-out corpus seeds: shares 0.28-0.49, true first groups of this
-            // size 0.51 and more; doc/matching.md, "The walls of a small first group").
-            double wall_share = -1.0;
-            if (ok && int(clique.size()) < p.first_group_wall_check_pairs &&
-                p.min_first_group_wall_agreement > 0.0)
-            {
-                wall_share = wallsOf(clique, fitOf(clique, nullptr)).share;
-                ok = wall_share >= p.min_first_group_wall_agreement;
-            }
+            ok = significant(clique);
             if (!ok && clique.size() > out.refused_size)
             {
                 out.refused_size = clique.size();
                 out.refused_false_alarms = std::pow(10.0, log_nfa);
                 out.refused_candidates = pool.size();
                 out.refused_wall_share = wall_share;
+            }
+        }
+        if (ok && !first)
+        {
+            // Rival placements: maximum cliques of the candidates that pair the group's
+            // vertices otherwise and that its fit places out of tolerance; each found leaves
+            // the pool with the candidates its own fit places (a building symmetric under turns
+            // of 72 degrees has 4). One nearly as big as the group (min_rival_size_ratio, as in
+            // a ratio test) and as acceptable as a first group leaves the choice undecided by
+            // size: findConsistentGroups() plays it out.
+            std::vector<std::uint8_t> gt_in(n_gt, 0), map_in(n_map, 0), member(n, 0);
+            for (int i : clique) gt_in[cands[i].gt] = map_in[cands[i].map] = member[i] = 1;
+            auto misplaced = [&](const Candidate& c, const Transform2D& fit)
+            { return (pg(c.gt) - fit.apply(pm(c.map))).norm() > tolerance(c, 0.0); };
+            std::vector<int> rival_pool;
+            const Transform2D fit = fitOf(clique, nullptr);
+            for (int i : pool)
+                if (!member[i] && (gt_in[cands[i].gt] || map_in[cands[i].map]) &&
+                    misplaced(cands[i], fit))
+                    rival_pool.push_back(i);
+            for (int k = 0; k < p.max_rival_placements; ++k)
+            {
+                MaxClique rival_search(adjacent, n, std::size_t(p.max_clique_steps));
+                std::vector<int> rival = rival_search.run(rival_pool);
+                out.clique_steps += rival_search.steps();
+                if (int(rival.size()) < needed()) break;
+                std::fill(member.begin(), member.end(), 0);
+                for (int i : rival) member[i] = 1;
+                const Transform2D rival_fit = fitOf(rival, nullptr);
+                rival_pool.erase(
+                    std::remove_if(rival_pool.begin(), rival_pool.end(),
+                                   [&](int i)
+                                   { return member[i] || !misplaced(cands[i], rival_fit); }),
+                    rival_pool.end());
+                std::sort(rival.begin(), rival.end());
+                // Nearly as big before settling (a cheap test first) and after.
+                auto nearlyAsBig = [&]
+                { return double(rival.size()) >= p.min_rival_size_ratio * double(clique.size()); };
+                if (!nearlyAsBig() || !settle(rival) || !nearlyAsBig() || !significant(rival))
+                    continue;
+                out.rivals.emplace_back();
+                for (int i : rival) out.rivals.back().emplace_back(cands[i].gt, cands[i].map);
             }
         }
         if (ok) accept(clique);
@@ -799,6 +856,52 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
         }
     }
     return out;
+}
+
+}  // namespace
+
+ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGraph& map,
+                                     MatchContext& ctx)
+{
+    // A maximum clique is one placement of the map; in a building symmetric under a turn or a
+    // mirror another placement of its part is as consistent, and which one the clique search
+    // returns is chance (a pentagonal floor plan broken in two: every one of 49 pairs placed one
+    // wing over; doc/matching.md, "Rival placements"). Only the whole match tells them apart:
+    // the true placement also pairs the vertices where the symmetry ends, with their true
+    // attributes. So each rival placement as acceptable as the first group is played out to
+    // the end, and the match whose pairs are the most similar in sum wins (ties: the maximum
+    // clique's).
+    const std::vector<int> gt_to_map = ctx.gt_to_map, map_to_gt = ctx.map_to_gt;
+    auto similaritySum = [&](const ConsistentMatch& m)
+    {
+        double sum = 0.0;
+        for (const auto& core : m.cores)
+            for (const auto& [a, b] : core) sum += ctx.similarity(a, b);
+        for (const auto& g : m.grown) sum += ctx.similarity(g.gt, g.map);
+        return sum;
+    };
+    ConsistentMatch best = findGroups(gt, map, ctx, nullptr);
+    const std::vector<std::vector<std::pair<int, int>>> rivals = best.rivals;
+    std::size_t steps = best.clique_steps;
+    std::vector<int> best_gt_to_map = ctx.gt_to_map, best_map_to_gt = ctx.map_to_gt;
+    for (std::size_t r = 0; r < rivals.size(); ++r)
+    {
+        ctx.gt_to_map = gt_to_map;
+        ctx.map_to_gt = map_to_gt;
+        ConsistentMatch other = findGroups(gt, map, ctx, &rivals[r]);
+        steps += other.clique_steps;
+        if (similaritySum(other) > similaritySum(best))
+        {
+            best = std::move(other);
+            best.rival_won = int(r) + 1;
+            best_gt_to_map = ctx.gt_to_map, best_map_to_gt = ctx.map_to_gt;
+        }
+    }
+    best.rivals = rivals;
+    best.clique_steps = steps;
+    ctx.gt_to_map = best_gt_to_map;
+    ctx.map_to_gt = best_map_to_gt;
+    return best;
 }
 
 }  // namespace mrpt_topoeval::internal

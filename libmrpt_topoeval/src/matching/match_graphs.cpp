@@ -97,6 +97,17 @@ void matchConsistent(const TopologyGraph& ground_truth, const TopologyGraph& map
     std::sort(match.pairs.begin(), match.pairs.end(),
               [](const VertexPair& x, const VertexPair& y)
               { return x.ground_truth < y.ground_truth; });
+    if (!found.rivals.empty())
+        // A symmetric building: say so, since a user reading a low coverage should know that
+        // part of the map fitted several places (doc/matching.md, "Rival placements").
+        match.messages.push_back(
+            "the first group of geometrically consistent pairs had " +
+            std::to_string(found.rivals.size()) +
+            " rival placement(s) as acceptable (the building is symmetric there); each was "
+            "played out and the match kept is the one whose pairs are the most similar in sum (" +
+            (found.rival_won > 0 ? "rival " + std::to_string(found.rival_won)
+                                 : std::string("the biggest group's")) +
+            ")");
     if (!found.cores.empty()) return;
     const std::string graphs = " candidate pairs (graphs of " + std::to_string(ctx.gt.numActive()) +
                                " and " + std::to_string(ctx.map.numActive()) +

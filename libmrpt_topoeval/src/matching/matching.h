@@ -64,6 +64,11 @@ struct ConsistentMatch
     double refused_false_alarms = 0.0;
     std::size_t refused_candidates = 0;
     double refused_wall_share = -1.0;
+    /** Rival placements of the first group (the same part of the map placed elsewhere, each as
+     * acceptable as a first group), their pairs (gt, map); rival_won: which one the returned
+     * match was played out from (1-based), 0 for the maximum clique. */
+    std::vector<std::vector<std::pair<int, int>>> rivals;
+    int rival_won = 0;
 };
 
 /** method = consistent: candidate pairs by similarity and degree, groups as maximum cliques of

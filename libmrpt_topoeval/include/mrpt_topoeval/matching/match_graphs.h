@@ -174,6 +174,21 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * similarity or significance), and big true groups of distorted SLAM maps have wall
      * shares down to 0.35 (a column hall's walls are its columns) [1]. */
     int first_group_wall_check_pairs = 10;
+    /** Rival placements of the first group searched and, each as acceptable as a first group
+     * (the same tests), played out to a whole match; the match whose pairs are the most similar
+     * in sum is kept. In a building symmetric under a turn or a mirror the maximum clique is
+     * one of several placements of its part, and the one found first is chance (a pentagonal
+     * floor plan, symmetric under turns of 72 degrees, has 4 rivals; doc/matching.md, "Rival
+     * placements"). Each rival played out costs one more match. 0 turns it off [count]. */
+    int max_rival_placements = 4;
+    /** ... a rival is played out only when it keeps at least this share of the first group's
+     * pairs (before and after its fit is settled): a much smaller one is decided by size, as a
+     * maximum clique is. As in Lowe's ratio test (2004), whose 0.8 this is: the rivals of
+     * symmetric buildings in the corpus kept 0.85-1, the chance ones 0.16-0.6 (two of 6 pairs, 0.83
+     * and 1, are played out and lose) and a mirrored wing of a broken map 0.67, which played out
+     * wins by one grown pair's similarity and is false (held-out seed 2, doc/matching.md) [ratio].
+     */
+    double min_rival_size_ratio = 0.8;
     /** The wall points around a group: those within each vertex's clearance plus this [m]. */
     double wall_margin_m = 1.0;
     /** A wall point agrees when the other map has one within this, or within 1.5 cells of
