@@ -9,6 +9,7 @@
 // vertices equals the distance between their map vertices. A distance within one map does not
 // depend on that map's frame, so the global frames of the maps play no part.
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -199,6 +200,25 @@ std::vector<int> largestLinkedComponent(const std::vector<int>& set,
     std::vector<int> out;
     for (int k : best) out.push_back(set[k]);
     return out;
+}
+
+/** How far a set of points spreads across its principal line: the RMS distance from it (the
+ * square root of the smaller eigenvalue of their covariance) [m]. `at(vertex(i))` is a point. */
+template <typename At, typename Vertex>
+double widthOf(const std::vector<int>& set, const At& at, const Vertex& vertex)
+{
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (int i : set) mean += at(vertex(i));
+    mean /= double(set.size());
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    for (int i : set)
+    {
+        const Eigen::Vector2d d = at(vertex(i)) - mean;
+        cov += d * d.transpose();
+    }
+    cov /= double(set.size());
+    return std::sqrt(
+        std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(cov).eigenvalues()(0)));
 }
 
 /** findConsistentGroups() from a given first clique (`first`, pairs (gt, map), tried before the
@@ -567,18 +587,32 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         // doc/matching.md, "The walls of a small first group").
         const double m = double(pool.size());
         const double density = m > 1.0 ? double(search.edges()) / (0.5 * m * (m - 1.0)) : 0.0;
-        double log_nfa = 0.0, wall_share = -1.0;
+        // A group along one line (a corridor's junctions) checks a spacing pattern only: its
+        // vertices within distance_tolerance_m of the line, every distance between them is
+        // fixed, within tolerance, by their places along it, so the a contrario count, which
+        // takes its s(s-1)/2 distances as independent, overstates it. Such a group cannot be
+        // the first (a small graph's group, judged by its similarity instead, is not asked):
+        // a true first group also holds vertices off the line (rooms), and every
+        // chance first group of corpus seeds 1-5 narrower than 0.25 m was one (0.08-0.13 m
+        // wide; true ones 0.34 m and more; doc/matching.md, "A first group along one line").
+        double log_nfa = 0.0, wall_share = -1.0, width = -1.0;
         auto significant = [&](const std::vector<int>& group)
         {
-            wall_share = -1.0;
+            wall_share = width = -1.0;
             if (int(group.size()) < p.min_group_vertices) return true;
             log_nfa = log10FalseAlarms(m, double(group.size()), density);
             if (log_nfa > std::log10(p.max_false_alarms)) return false;
-            if (int(group.size()) >= p.first_group_wall_check_pairs ||
-                !(p.min_first_group_wall_agreement > 0.0))
-                return true;
-            wall_share = wallsOf(group, fitOf(group, nullptr)).share;
-            return wall_share >= p.min_first_group_wall_agreement;
+            if (int(group.size()) < p.first_group_wall_check_pairs &&
+                p.min_first_group_wall_agreement > 0.0)
+            {
+                wall_share = wallsOf(group, fitOf(group, nullptr)).share;
+                if (wall_share < p.min_first_group_wall_agreement) return false;
+            }
+            width = std::min(widthOf(group, pg, [&](int i) { return cands[i].gt; }),
+                             widthOf(group, pm, [&](int i) { return cands[i].map; }));
+            if (width < p.distance_tolerance_m) return false;
+            width = -1.0;
+            return true;
         };
         // A clique that mixes two parts (near a pivot their distances agree) settles into
         // neither: its fit is a compromise and dropping the worst pairs drops true ones. Then
@@ -603,6 +637,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 out.refused_false_alarms = std::pow(10.0, log_nfa);
                 out.refused_candidates = pool.size();
                 out.refused_wall_share = wall_share;
+                out.refused_width_m = width;
             }
         }
         if (ok && !first)

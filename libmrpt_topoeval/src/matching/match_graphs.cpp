@@ -119,7 +119,16 @@ void matchConsistent(const TopologyGraph& ground_truth, const TopologyGraph& map
         return out.str();
     };
     const std::string too_little = "; the maps share too little structure to be matched";
-    if (found.refused_size > 0 && found.refused_wall_share >= 0.0)
+    if (found.refused_size > 0 && found.refused_width_m >= 0.0)
+        match.messages.push_back(
+            "the biggest group of geometrically consistent pairs (" +
+            std::to_string(found.refused_size) + ") among " +
+            std::to_string(found.refused_candidates) + graphs +
+            "it lies along one line (its vertices " + twoDigits(found.refused_width_m) +
+            " m from it, RMS, less than [GraphMatcher] distance_tolerance_m), so it checks "
+            "only a spacing along that line" +
+            too_little);
+    else if (found.refused_size > 0 && found.refused_wall_share >= 0.0)
         match.messages.push_back(
             "the biggest significant group of geometrically consistent pairs (" +
             std::to_string(found.refused_size) + ") among " +

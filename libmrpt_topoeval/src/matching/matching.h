@@ -57,13 +57,16 @@ struct ConsistentMatch
     std::size_t candidates = 0;    //!< Candidate pairs (vertices of the consistency graph).
     int min_group_size = 0;        //!< The effective smallest group (small graphs: fewer).
     std::size_t clique_steps = 0;  //!< Branch-and-bound steps spent, all searches.
-    /** The biggest first group refused as insignificant (max_false_alarms) or for its walls
-     * (min_first_group_wall_agreement), 0 if none, the number of chance groups as big
-     * expected among its candidates, and its walls' share when they refused it (else -1). */
+    /** The biggest first group refused as insignificant (max_false_alarms), for its walls
+     * (min_first_group_wall_agreement) or as a line (distance_tolerance_m), 0 if none, the number
+     * of chance groups as big expected among its candidates, and its walls' share when they refused
+     * it (else -1). */
     std::size_t refused_size = 0;
     double refused_false_alarms = 0.0;
     std::size_t refused_candidates = 0;
     double refused_wall_share = -1.0;
+    /** ... and its width across its line when that refused it (else -1) [m]. */
+    double refused_width_m = -1.0;
     /** Rival placements of the first group (the same part of the map placed elsewhere, each as
      * acceptable as a first group), their pairs (gt, map); rival_won: which one the returned
      * match was played out from (1-based), 0 for the maximum clique. */

@@ -77,7 +77,9 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
     /** Two pairs (g1, m1), (g2, m2) are consistent when |d(g1, g2) - d(m1, m2)| is at most
      * distance_tolerance_m + distance_tolerance_ratio x the longer distance +
      * clearance_tolerance_share x (clearance of g1 + clearance of g2). The absolute term
-     * covers skeleton noise [m]; */
+     * covers skeleton noise. A first group whose vertices lie within it of one line (RMS) is
+     * refused: across the line it checks nothing (doc/matching.md, "A first group along one
+     * line") [m]; */
     double distance_tolerance_m = 0.25;
     /** ... the relative term slow bending and scale errors of robot maps [ratio]; */
     double distance_tolerance_ratio = 0.03;
