@@ -176,6 +176,13 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             s.parts_with_3_pairs += (part >= 0 && n >= 3) ? 1 : 0;
             s.parts_with_5_pairs += (part >= 0 && n >= 5) ? 1 : 0;
         }
+        for (std::size_t k = 0; k < truth.part_yaw_deg.size(); ++k)
+        {
+            const int part = static_cast<int>(k);
+            s.parts.push_back({part, truth.part_yaw_deg[k],
+                               static_cast<std::size_t>(counterparts_per_part[part]),
+                               static_cast<std::size_t>(true_per_part[part])});
+        }
     }
     s.precision = s.matched ? static_cast<double>(s.true_pairs) / s.matched : nan;
     s.recall = s.gt_with_counterpart
@@ -203,6 +210,9 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             int part = -1, best = 0;
             for (const auto& [k, n] : votes)
                 if (k >= 0 && n > best) part = k, best = n;
+            GroupScore g{group.transform.yaw_deg, {}, part};
+            for (const auto& [k, n] : votes) g.vertices_per_part[k] = static_cast<std::size_t>(n);
+            s.groups.push_back(std::move(g));
             if (part < 0) continue;
             const double err = std::remainder(
                 group.transform.yaw_deg - truth.part_yaw_deg[static_cast<std::size_t>(part)],

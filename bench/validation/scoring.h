@@ -7,6 +7,7 @@
 #include <mrpt_topoeval/QualityReport.h>
 #include <mrpt_topoeval/TopologyGraph.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,24 @@ TruthCheck checkTruth(const mrpt::maps::COccupancyGridMap2D& gt,
 double mapDistortion(const mrpt::maps::COccupancyGridMap2D& map, const Truth& truth,
                      int stride = 3);
 
+/** Broken maps: one injected part (Truth::part_of), its turn, and how much of it the match has. */
+struct PartScore
+{
+    int part = -1;
+    double yaw_deg = 0.0;          //!< The part's injected rotation [deg].
+    std::size_t counterparts = 0;  //!< Its ground-truth vertices with a counterpart.
+    std::size_t true_pairs = 0;    //!< ... and of those, truly matched.
+};
+
+/** Broken maps: one brokenness group found, its rotation, and in which injected part the map
+ * partners of its vertices lie (part -1: in none). */
+struct GroupScore
+{
+    double yaw_deg = 0.0;
+    std::map<int, std::size_t> vertices_per_part;
+    int part = -1;  //!< The part most of its vertices lie in (-1: none).
+};
+
 /** The figures of one case. Counts are of non-spurious vertices. */
 struct CaseScore
 {
@@ -74,6 +93,9 @@ struct CaseScore
     /** Largest |yaw error| of an accepted brokenness group against the part most of its
      * vertices belong to [deg]; NaN when not a broken case or no group. */
     double max_group_rotation_error_deg = 0.0;
+    /** Broken maps: every injected part and every brokenness group, for brokenCause(). */
+    std::vector<PartScore> parts;
+    std::vector<GroupScore> groups;
     double coverage = 0.0, quality = 0.0, relative_rmse_m = 0.0;
     /** Pairs whose map vertex is more than this from its partner count as false [m]:
      * max(0.5 m, half the larger clearance of the two vertices), since a dead end or a room's

@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -66,6 +67,36 @@ double Aggregate::recall() const
     return counterparts ? static_cast<double>(true_pairs) / counterparts : kNaN;
 }
 
+std::string brokenCause(const CaseScore& s)
+{
+    if (s.brokenness_found == s.brokenness_injected &&
+        !(s.max_group_rotation_error_deg > kExactRotationErrorDeg))
+        return "";
+    if (s.matched == 0) return "nothing matched";
+    if (s.brokenness_found > s.brokenness_injected) return "a break too many";
+    if (s.max_group_rotation_error_deg > kExactRotationErrorDeg) return "a group turned wrong";
+    std::set<int> represented;
+    for (const auto& g : s.groups)
+        if (g.part >= 0) represented.insert(g.part);
+    std::set<std::string> causes;  // sorted, each once
+    for (const auto& p : s.parts)
+    {
+        if (represented.count(p.part)) continue;
+        if (p.counterparts < 3)
+            causes.insert("a part not observable");
+        else if (p.true_pairs == 0)
+            causes.insert("a part unmatched");
+        else if (p.true_pairs < 3)
+            causes.insert("a part with 1-2 pairs");
+        else
+            causes.insert("a part inside another's group");
+    }
+    std::string out;
+    for (const auto& c : causes) out += (out.empty() ? "" : " + ") + c;
+    // Every part has a group and none is turned wrong: two groups of one part, one lost.
+    return out.empty() ? "two groups of one part" : out;
+}
+
 Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*>& cases)
 {
     Aggregate a;
@@ -93,6 +124,7 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
             const bool exact = s.brokenness_found == s.brokenness_injected &&
                                !(s.max_group_rotation_error_deg > kExactRotationErrorDeg);
             if (exact) ++a.broken_exact;
+            if (!exact) ++a.broken_causes[brokenCause(s)];
             if (s.parts_with_5_counterparts >= s.brokenness_injected + 1)
             {
                 ++a.broken_measurable;
@@ -288,6 +320,18 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
               << " whose every part holds 5 ground-truth vertices with a counterpart; in "
               << a.broken_observable_exact << " of the " << a.broken_observable
               << " whose every part holds 3 (with fewer a part's break is not observable)\n";
+    for (const auto& a : s.kinds)
+        if (a.name == "broken" && !a.broken_causes.empty())
+        {
+            std::vector<std::pair<std::size_t, std::string>> by_count;
+            for (const auto& [cause, n] : a.broken_causes) by_count.emplace_back(n, cause);
+            std::stable_sort(by_count.begin(), by_count.end(),
+                             [](const auto& x, const auto& y) { return x.first > y.first; });
+            o << "broken, not exactly right, by cause:";
+            for (std::size_t k = 0; k < by_count.size(); ++k)
+                o << (k ? "; " : " ") << by_count[k].first << " " << by_count[k].second;
+            o << "\n";
+        }
     for (const auto& a : s.kinds)
         if (a.name == "crop")
             o << "\ncrop: mean |coverage - share of ground-truth vertices kept| = "

@@ -3,6 +3,7 @@
 // Summaries of the validation corpus (doc/validation.md, "Measures"): per kind, pooled, per
 // family (Spearman of severity vs quality), the real pairs; and the floors of the CI subset.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -42,12 +43,22 @@ struct Aggregate
      * of those the ones found exactly. */
     std::size_t broken_observable = 0, broken_observable_exact = 0;
     double max_rotation_error_deg = 0.0;  //!< Over every group of every broken case.
+    /** Broken cases not exactly right, by brokenCause(). */
+    std::map<std::string, std::size_t> broken_causes;
     double mean_coverage = 0.0, max_coverage = 0.0, mean_quality = 0.0;
     double mean_coverage_error = 0.0;  //!< Crops: mean |coverage - share with counterpart|.
     double mean_time_ms = 0.0;
 };
 
 Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*>& cases);
+
+/** Why a broken case is not exactly right (doc/validation.md, "Why broken cases fail"): "" when
+ * it is; else "nothing matched", "a break too many", "a group turned wrong" (more than 3
+ * degrees from its part's turn); else, for the parts that no group stands for, joined by " + ":
+ * "a part not observable" (fewer than 3 ground-truth vertices with a counterpart), "a part
+ * unmatched" (none of them matched), "a part with 1-2 pairs", "a part inside another's group"
+ * (3 or more true pairs, but no group of its own). */
+std::string brokenCause(const CaseScore& s);
 
 /** Two maps whose measured distortion differs by less than this are not ordered by it [m]: one
  * cell of the generated maps (0.05 m). Session 12 found every inversion of the angled and

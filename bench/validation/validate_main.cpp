@@ -277,6 +277,34 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("false_core").value(s.false_core);
         j.key("false_grown").value(s.false_grown);
         j.key("max_group_rotation_error_deg").value(s.max_group_rotation_error_deg, 2);
+        if (!s.parts.empty())
+        {
+            j.key("broken_cause").value(brokenCause(s));
+            j.key("parts").beginArray();
+            for (const auto& p : s.parts)
+            {
+                j.beginObject();
+                j.key("part").value(p.part);
+                j.key("yaw_deg").value(p.yaw_deg, 2);
+                j.key("counterparts").value(static_cast<std::uint64_t>(p.counterparts));
+                j.key("true_pairs").value(static_cast<std::uint64_t>(p.true_pairs));
+                j.endObject();
+            }
+            j.endArray();
+            j.key("groups").beginArray();
+            for (const auto& g : s.groups)
+            {
+                j.beginObject();
+                j.key("yaw_deg").value(g.yaw_deg, 2);
+                j.key("part").value(g.part);
+                j.key("vertices_per_part").beginObject();
+                for (const auto& [part, n] : g.vertices_per_part)
+                    j.key(std::to_string(part)).value(static_cast<std::uint64_t>(n));
+                j.endObject();
+                j.endObject();
+            }
+            j.endArray();
+        }
         j.key("messages").beginArray();
         for (const auto& m : s.messages) j.value(m);
         j.endArray();
