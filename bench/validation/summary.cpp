@@ -72,7 +72,10 @@ std::string brokenCause(const CaseScore& s)
     if (s.brokenness_found == s.brokenness_injected &&
         !(s.max_group_rotation_error_deg > kExactRotationErrorDeg))
         return "";
-    if (s.matched == 0) return "nothing matched";
+    const bool observable = std::all_of(s.parts.begin(), s.parts.end(),
+                                        [](const auto& p) { return p.counterparts >= 3; });
+    if (s.matched == 0)
+        return observable ? "nothing matched" : "nothing matched, a part not observable";
     if (s.brokenness_found > s.brokenness_injected) return "a break too many";
     if (s.max_group_rotation_error_deg > kExactRotationErrorDeg) return "a group turned wrong";
     std::set<int> represented;

@@ -52,12 +52,13 @@ struct Aggregate
 
 Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*>& cases);
 
-/** Why a broken case is not exactly right (doc/validation.md, "Why broken cases fail"): "" when
- * it is; else "nothing matched", "a break too many", "a group turned wrong" (more than 3
- * degrees from its part's turn); else, for the parts that no group stands for, joined by " + ":
- * "a part not observable" (fewer than 3 ground-truth vertices with a counterpart), "a part
- * unmatched" (none of them matched), "a part with 1-2 pairs", "a part inside another's group"
- * (3 or more true pairs, but no group of its own). */
+/** Why a broken case is not exactly right (doc/validation.md, "Measures", "why a broken case
+ * fails"): "" when it is; else "nothing matched" (", a part not observable" added when a part
+ * has fewer than 3 ground-truth vertices with a counterpart), "a break too many", "a group
+ * turned wrong" (more than 3 degrees from its part's turn); else, for the parts that no group
+ * stands for, joined by " + ": "a part not observable", "a part unmatched" (none of its
+ * counterparts matched), "a part with 1-2 pairs", "a part inside another's group" (3 or more
+ * true pairs, but no group of its own). */
 std::string brokenCause(const CaseScore& s);
 
 /** Two maps whose measured distortion differs by less than this are not ordered by it [m]: one

@@ -51,12 +51,7 @@ public:
         m_best.clear();
         m_steps = 0;
         // Highest consistency-graph degree first (MCQ's initial order), stable for ties.
-        std::vector<int> deg(m_n, 0);
-        m_edges = 0;
-        for (int v : vertices)
-            for (int u : vertices) deg[v] += adj(u, v);
-        for (int v : vertices) m_edges += std::size_t(deg[v]);
-        m_edges /= 2;
+        const std::vector<int> deg = countEdges(vertices);
         std::stable_sort(vertices.begin(), vertices.end(),
                          [&](int a, int b) { return deg[a] > deg[b]; });
         std::vector<int> order, colour;
@@ -69,6 +64,18 @@ public:
     std::size_t steps() const { return m_steps; }
     /** Edges among the last run()'s vertices (the consistency graph's density). */
     std::size_t edges() const { return m_edges; }
+    /** Sets edges() to the edges among `vertices` without a search (for a clique given in
+     * advance); returns each vertex's degree among them, indexed by vertex. */
+    std::vector<int> countEdges(const std::vector<int>& vertices)
+    {
+        std::vector<int> deg(m_n, 0);
+        m_edges = 0;
+        for (int v : vertices)
+            for (int u : vertices) deg[v] += adj(u, v);
+        for (int v : vertices) m_edges += std::size_t(deg[v]);
+        m_edges /= 2;
+        return deg;
+    }
 
 private:
     bool adj(int a, int b) const { return m_adj[std::size_t(a) * m_n + b] != 0; }
@@ -559,17 +566,21 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         for (int i = 0; i < n; ++i)
             if (!rejected[pairKey(cands[i])]) pool.push_back(i);
         MaxClique search(adjacent, n, std::size_t(p.max_clique_steps));
-        std::vector<int> clique = search.run(pool);
-        out.clique_steps += search.steps();
+        std::vector<int> clique;
         if (attempt == 0 && first)
         {
             // A rival placement of another run's first group (below), in place of the maximum
-            // clique.
-            clique.clear();
+            // clique: no search, only the density of the pool for the significance test.
+            search.countEdges(pool);
             for (int i : pool)
                 if (std::find(first->begin(), first->end(),
                               std::make_pair(cands[i].gt, cands[i].map)) != first->end())
                     clique.push_back(i);
+        }
+        else
+        {
+            clique = search.run(pool);
+            out.clique_steps += search.steps();
         }
         if (int(clique.size()) < needed()) break;
         for (int i : clique) rejected[pairKey(cands[i])] = 1;
