@@ -21,6 +21,19 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
  * degrees") [deg]. */
 constexpr double kExactRotationErrorDeg = 3.0;
 
+/** Issue 11: the right number of breaks, and each group turned as its part is. */
+bool exactlyRight(const CaseScore& s)
+{
+    return s.brokenness_found == s.brokenness_injected &&
+           !(s.max_group_rotation_error_deg > kExactRotationErrorDeg);
+}
+
+/** Every part holds 3 ground-truth vertices with a counterpart: its break is observable. */
+bool observable(const CaseScore& s)
+{
+    return s.parts_with_3_counterparts >= s.brokenness_injected + 1;
+}
+
 /** A map of another building ("different", "twin"): no truth, every pair is false. */
 bool otherBuilding(const std::string& kind) { return kind == "different" || kind == "twin"; }
 
@@ -69,13 +82,9 @@ double Aggregate::recall() const
 
 std::string brokenCause(const CaseScore& s)
 {
-    if (s.brokenness_found == s.brokenness_injected &&
-        !(s.max_group_rotation_error_deg > kExactRotationErrorDeg))
-        return "";
-    const bool observable = std::all_of(s.parts.begin(), s.parts.end(),
-                                        [](const auto& p) { return p.counterparts >= 3; });
+    if (exactlyRight(s)) return "";
     if (s.matched == 0)
-        return observable ? "nothing matched" : "nothing matched, a part not observable";
+        return observable(s) ? "nothing matched" : "nothing matched, a part not observable";
     if (s.brokenness_found > s.brokenness_injected) return "a break too many";
     if (s.max_group_rotation_error_deg > kExactRotationErrorDeg) return "a group turned wrong";
     std::set<int> represented;
@@ -123,17 +132,17 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
         if (s.brokenness_injected >= 0 && r->spec.kind == "broken")
         {
             ++a.broken;
-            // Issue 11: the right number of breaks, and each group turned as its part is.
-            const bool exact = s.brokenness_found == s.brokenness_injected &&
-                               !(s.max_group_rotation_error_deg > kExactRotationErrorDeg);
-            if (exact) ++a.broken_exact;
-            if (!exact) ++a.broken_causes[brokenCause(s)];
+            const bool exact = exactlyRight(s);
+            if (exact)
+                ++a.broken_exact;
+            else
+                ++a.broken_causes[brokenCause(s)];
             if (s.parts_with_5_counterparts >= s.brokenness_injected + 1)
             {
                 ++a.broken_measurable;
                 if (exact) ++a.broken_measurable_exact;
             }
-            if (s.parts_with_3_counterparts >= s.brokenness_injected + 1)
+            if (observable(s))
             {
                 ++a.broken_observable;
                 if (exact) ++a.broken_observable_exact;

@@ -9,7 +9,6 @@
 // vertices equals the distance between their map vertices. A distance within one map does not
 // depend on that map's frame, so the global frames of the maps play no part.
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -20,6 +19,7 @@
 #include <tuple>
 
 #include "geometry/horn.h"
+#include "geometry/line_spread.h"
 #include "matching/matching.h"
 #include "matching/wall_agreement.h"
 
@@ -209,25 +209,6 @@ std::vector<int> largestLinkedComponent(const std::vector<int>& set,
     return out;
 }
 
-/** How far a set of points spreads across its principal line: the RMS distance from it (the
- * square root of the smaller eigenvalue of their covariance) [m]. `at(vertex(i))` is a point. */
-template <typename At, typename Vertex>
-double widthOf(const std::vector<int>& set, const At& at, const Vertex& vertex)
-{
-    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-    for (int i : set) mean += at(vertex(i));
-    mean /= double(set.size());
-    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-    for (int i : set)
-    {
-        const Eigen::Vector2d d = at(vertex(i)) - mean;
-        cov += d * d.transpose();
-    }
-    cov /= double(set.size());
-    return std::sqrt(
-        std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(cov).eigenvalues()(0)));
-}
-
 /** findConsistentGroups() from a given first clique (`first`, pairs (gt, map), tried before the
  * maximum clique) or, with none, from the maximum clique; then as below. */
 ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, MatchContext& ctx,
@@ -355,10 +336,17 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                    : min_size;
     };
     // Horn's fit of a set of candidates, map to ground truth.
+    // The ground-truth and map positions of a set of candidates.
+    auto pointsOf = [&](const std::vector<int>& set)
+    {
+        std::pair<std::vector<Eigen::Vector2d>, std::vector<Eigen::Vector2d>> pts;
+        for (int i : set)
+            pts.first.push_back(pg(cands[i].gt)), pts.second.push_back(pm(cands[i].map));
+        return pts;
+    };
     auto fitOf = [&](const std::vector<int>& set, double* mse)
     {
-        std::vector<Eigen::Vector2d> a, b;
-        for (int i : set) a.push_back(pg(cands[i].gt)), b.push_back(pm(cands[i].map));
+        const auto [a, b] = pointsOf(set);
         return hornAlign(a, b, mse);
     };
     // Each accepted group's fit, made once in accept() (settle() asks for it on every try).
@@ -395,8 +383,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         for (;;)
         {
             if (int(group.size()) < need) return false;
-            std::vector<Eigen::Vector2d> a, b;
-            for (int i : group) a.push_back(pg(cands[i].gt)), b.push_back(pm(cands[i].map));
+            const auto [a, b] = pointsOf(group);
             const Transform2D T = hornAlign(a, b);
             Eigen::Vector2d centre = Eigen::Vector2d::Zero();
             for (const auto& x : a) centre += x;
@@ -619,8 +606,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 wall_share = wallsOf(group, fitOf(group, nullptr)).share;
                 if (wall_share < p.min_first_group_wall_agreement) return false;
             }
-            width = std::min(widthOf(group, pg, [&](int i) { return cands[i].gt; }),
-                             widthOf(group, pm, [&](int i) { return cands[i].map; }));
+            const auto [a, b] = pointsOf(group);
+            width = std::min(lineSpread(a), lineSpread(b));
             if (width < p.distance_tolerance_m) return false;
             width = -1.0;
             return true;
@@ -927,6 +914,7 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
         return sum;
     };
     ConsistentMatch best = findGroups(gt, map, ctx, nullptr);
+    double best_sum = similaritySum(best);
     const std::vector<std::vector<std::pair<int, int>>> rivals = best.rivals;
     std::size_t steps = best.clique_steps;
     std::vector<int> best_gt_to_map = ctx.gt_to_map, best_map_to_gt = ctx.map_to_gt;
@@ -936,8 +924,10 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
         ctx.map_to_gt = map_to_gt;
         ConsistentMatch other = findGroups(gt, map, ctx, &rivals[r]);
         steps += other.clique_steps;
-        if (similaritySum(other) > similaritySum(best))
+        const double sum = similaritySum(other);
+        if (sum > best_sum)
         {
+            best_sum = sum;
             best = std::move(other);
             best.rival_won = int(r) + 1;
             best_gt_to_map = ctx.gt_to_map, best_map_to_gt = ctx.map_to_gt;

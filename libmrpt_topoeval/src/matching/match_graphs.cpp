@@ -119,21 +119,23 @@ void matchConsistent(const TopologyGraph& ground_truth, const TopologyGraph& map
         return out.str();
     };
     const std::string too_little = "; the maps share too little structure to be matched";
+    // "the biggest [significant ]group ... (N) among M candidate pairs (graphs of ...): "
+    auto refused = [&](const std::string& kind)
+    {
+        return "the biggest " + kind + "group of geometrically consistent pairs (" +
+               std::to_string(found.refused_size) + ") among " +
+               std::to_string(found.refused_candidates) + graphs;
+    };
     if (found.refused_size > 0 && found.refused_width_m >= 0.0)
         match.messages.push_back(
-            "the biggest group of geometrically consistent pairs (" +
-            std::to_string(found.refused_size) + ") among " +
-            std::to_string(found.refused_candidates) + graphs +
-            "it lies along one line (its vertices " + twoDigits(found.refused_width_m) +
+            refused("") + "it lies along one line (its vertices " +
+            twoDigits(found.refused_width_m) +
             " m from it, RMS, less than [GraphMatcher] distance_tolerance_m), so it checks "
             "only a spacing along that line" +
             too_little);
     else if (found.refused_size > 0 && found.refused_wall_share >= 0.0)
         match.messages.push_back(
-            "the biggest significant group of geometrically consistent pairs (" +
-            std::to_string(found.refused_size) + ") among " +
-            std::to_string(found.refused_candidates) + graphs + "only a share of " +
-            twoDigits(found.refused_wall_share) +
+            refused("significant ") + "only a share of " + twoDigits(found.refused_wall_share) +
             " of the walls around it agree under its fit, less than [GraphMatcher] "
             "min_first_group_wall_agreement asks" +
             too_little);
