@@ -97,20 +97,32 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     CaseScore s;
     s.gt_vertices = gt.numNonSpuriousVertices();
     s.map_vertices = map.numNonSpuriousVertices();
-    // The truth position of every map vertex, once.
-    std::vector<std::optional<Eigen::Vector2d>> mapped(map.vertices.size());
+    // The truth places of every map vertex, once: (part, ground-truth position), the first
+    // the most likely; a vertex on a broken map's seam has one per part that made it.
+    std::vector<std::vector<std::pair<int, Eigen::Vector2d>>> places(map.vertices.size());
     if (!truth.different_building && truth.mapping)
         for (const auto& v : map.vertices)
-            mapped[static_cast<std::size_t>(v.id)] =
-                truth.vertex_mapping ? truth.vertex_mapping(v.position_m, v.clearance_m)
-                                     : truth.mapping(v.position_m);
-    auto isTrue = [&](int g, int m)
+        {
+            auto& own = places[static_cast<std::size_t>(v.id)];
+            if (truth.vertex_parts)
+            {
+                own = truth.vertex_parts(v.position_m, v.clearance_m);
+                continue;
+            }
+            const auto q = truth.vertex_mapping ? truth.vertex_mapping(v.position_m, v.clearance_m)
+                                                : truth.mapping(v.position_m);
+            if (q) own.emplace_back(truth.part_of ? truth.part_of(v.position_m) : -1, *q);
+        }
+    // The part by which map vertex m stands for ground-truth vertex g (-2: it does not).
+    auto trueBy = [&](int g, int m)
     {
-        const auto& q = mapped[static_cast<std::size_t>(m)];
         const auto& gv = gt.vertices[static_cast<std::size_t>(g)];
-        return q && (*q - gv.position_m).norm() <=
-                        CaseScore::pairTolerance(gv, map.vertices[static_cast<std::size_t>(m)]);
+        const double tol = CaseScore::pairTolerance(gv, map.vertices[static_cast<std::size_t>(m)]);
+        for (const auto& [part, q] : places[static_cast<std::size_t>(m)])
+            if ((q - gv.position_m).norm() <= tol) return part;
+        return -2;
     };
+    auto isTrue = [&](int g, int m) { return trueBy(g, m) != -2; };
     std::map<int, int> counterparts_per_part;
     for (const auto& g : gt.vertices)
     {
@@ -119,7 +131,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             if (!m.spurious && isTrue(g.id, m.id))
             {
                 ++s.gt_with_counterpart;
-                if (truth.part_of) ++counterparts_per_part[truth.part_of(m.position_m)];
+                if (truth.part_of) ++counterparts_per_part[trueBy(g.id, m.id)];
                 break;
             }
     }
@@ -129,7 +141,8 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
         ++s.matched;
         if (!isTrue(p.ground_truth, p.map))
         {
-            const auto& q = mapped[static_cast<std::size_t>(p.map)];
+            const auto& own = places[static_cast<std::size_t>(p.map)];
+            const Eigen::Vector2d* q = own.empty() ? nullptr : &own.front().second;
             std::ostringstream line;
             line << "gt " << p.ground_truth << " -> map " << p.map << " ("
                  << (p.stage == MatchStage::NeighbourGrowing ? "grown" : "core") << "), ";
@@ -158,9 +171,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             continue;
         }
         ++s.true_pairs;
-        if (truth.part_of)
-            ++true_per_part[truth.part_of(
-                map.vertices[static_cast<std::size_t>(p.map)].position_m)];
+        if (truth.part_of) ++true_per_part[trueBy(p.ground_truth, p.map)];
     }
     if (truth.part_of && truth.injected_breaks >= 0)
     {
@@ -205,7 +216,10 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             {
                 const int m = report.match.mapVertexOf(g);
                 if (m < 0) continue;
-                ++votes[truth.part_of(map.vertices[static_cast<std::size_t>(m)].position_m)];
+                // A true pair's part is the one that makes it true; else the likeliest.
+                const int by = trueBy(g, m);
+                const auto& own = places[static_cast<std::size_t>(m)];
+                ++votes[by != -2 ? by : own.empty() ? -1 : own.front().first];
             }
             int part = -1, best = 0;
             for (const auto& [k, n] : votes)

@@ -46,6 +46,14 @@ struct Truth
     /** Broken maps: the rigid part (index into part_yaw_deg) a map point belongs to, -1 for
      * none; unset for maps that are not broken by construction. */
     std::function<int(const Eigen::Vector2d& p_map)> part_of;
+    /** Broken maps: where a topology vertex belongs, by the walls that make it (its Voronoi
+     * sites, those within its clearance): one place per part that put at least a quarter of
+     * those walls there, the part with the most first, then part_of(p_map) if not among them.
+     * A vertex on a seam is made by two parts, and its place is then true by either. Unset:
+     * part_of(p_map) and mapping. */
+    std::function<std::vector<std::pair<int, Eigen::Vector2d>>(const Eigen::Vector2d& p_map,
+                                                               double clearance_m)>
+        vertex_parts;
     /** Rotation of each part, map -> ground truth [deg]; part 0 is the unbroken rest. */
     std::vector<double> part_yaw_deg;
     /** Breaks injected (brokenness the scorer expects); -1 when not known (real maps, SLAM). */
