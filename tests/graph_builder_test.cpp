@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 
+#include "../libmrpt_topoeval/src/graph/GraphEditor.h"
 #include "synthetic_maps.h"
 
 using namespace mrpt_topoeval;
@@ -644,4 +646,81 @@ TEST(GraphBuilder, ADeadEndStopsWhereItsCorridorEndsNotInACorner)
     const TopoVertex* west = vertexNear(g, 1.75, 2.25);
     EXPECT_NE(west, nullptr);
     EXPECT_NE(vertexNear(tips, 1.75, 2.25), nullptr);
+}
+
+// GraphEditor::fromSkeleton() joins the Voronoi segments' chains without storing each segment:
+// it must give exactly the graph that storing them and dissolveDegreeTwo() gives (vertex order,
+// edge order and direction, paths, clearances), which the build used before. Random skeletons
+// with dead ends, junctions, multi-edges, pure rings and unused nodes.
+TEST(GraphBuilder, ChainsFromTheSkeletonEqualStoredSegmentsDissolved)
+{
+    using internal::GraphEditor;
+    std::mt19937 rng(7);
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        internal::VoronoiSkeleton vd;
+        const int nodes = 4 + trial % 40;
+        for (int i = 0; i < nodes; ++i)
+        {
+            vd.node_pos.emplace_back(double(rng() % 50), double(rng() % 50));
+            vd.node_clearance.push_back(double(rng() % 8));  // ties are common
+        }
+        // A random forest of paths (chains), extra segments (junctions, multi-edges) and a
+        // ring of its own; some nodes stay unused.
+        for (int i = 1; i < nodes; ++i)
+            if (rng() % 4 != 0) vd.edges.push_back({i - 1, i, double(rng() % 5)});
+        for (int k = 0; k < nodes / 5; ++k)
+        {
+            const int a = int(rng() % nodes), b = int(rng() % nodes);
+            if (a != b) vd.edges.push_back({a, b, double(rng() % 5)});
+        }
+        const int ring = int(vd.node_pos.size());
+        for (int i = 0; i < 4; ++i)
+        {
+            vd.node_pos.emplace_back(100.0 + i, 100.0 + (i % 2));
+            vd.node_clearance.push_back(i == 2 ? 3.0 : 1.0);
+        }
+        for (int i = 0; i < 4; ++i) vd.edges.push_back({ring + i, ring + (i + 1) % 4, 0.5});
+        std::shuffle(vd.edges.begin(), vd.edges.end(), rng);
+
+        GraphEditor stored;
+        std::vector<int> vertex(vd.node_pos.size(), -1);
+        auto vertexOf = [&](int n)
+        {
+            if (vertex[n] < 0) vertex[n] = stored.addVertex(vd.node_pos[n], vd.node_clearance[n]);
+            return vertex[n];
+        };
+        for (const auto& e : vd.edges)
+        {
+            const int a = vertexOf(e.a), b = vertexOf(e.b);  // first use: a, then b
+            stored.addSegment(a, b, e.min_clearance);
+        }
+        stored.dissolveDegreeTwo();
+        const GraphEditor joined = GraphEditor::fromSkeleton(vd);
+
+        ASSERT_EQ(joined.vertices().size(), stored.vertices().size()) << "trial " << trial;
+        ASSERT_EQ(joined.edges().size(), stored.edges().size()) << "trial " << trial;
+        for (std::size_t v = 0; v < stored.vertices().size(); ++v)
+        {
+            const auto &x = joined.vertices()[v], &y = stored.vertices()[v];
+            EXPECT_EQ(x.pos, y.pos);
+            EXPECT_EQ(x.clearance, y.clearance);
+            EXPECT_EQ(x.edges, y.edges);
+        }
+        for (std::size_t e = 0; e < stored.edges().size(); ++e)
+        {
+            const auto &x = joined.edges()[e], &y = stored.edges()[e];
+            EXPECT_EQ(x.a, y.a);
+            EXPECT_EQ(x.b, y.b);
+            EXPECT_EQ(x.path, y.path);
+            EXPECT_EQ(x.clearance, y.clearance);
+            EXPECT_EQ(x.min_clearance, y.min_clearance);
+            EXPECT_EQ(x.length, y.length);
+        }
+        // The ring is one loop edge at its vertex of largest clearance.
+        const auto ring_vertex = std::find_if(joined.vertices().begin(), joined.vertices().end(),
+                                              [](const auto& v) { return v.pos.x() >= 100.0; });
+        ASSERT_NE(ring_vertex, joined.vertices().end());
+        EXPECT_EQ(ring_vertex->clearance, 3.0);
+    }
 }

@@ -121,48 +121,57 @@ void GraphEditor::truncateEdge(int e, std::size_t keep)
     if (E2.length == 0.0) removeEdge(e);
 }
 
-void GraphEditor::dissolveDegreeTwo()
+namespace
 {
-    const int nv = static_cast<int>(m_v.size());
-    std::vector<char> anchor(nv, 0), used(m_e.size(), 0);
+// Paper II-B: every chain through degree-2 vertices of `g` becomes one edge (the body of
+// GraphEditor::dissolveDegreeTwo(), on any graph that `View` shows: the editor's own storage,
+// or the Voronoi segments before they are stored). View: numVertices(), alive(v), pos(v),
+// clearance(v), incident(v) (the incident edges in order, a loop twice), numEdges(),
+// edgeAlive(e), edgeA(e), edgeB(e), pathSize(e), pathPoint(e, j), pathClearance(e, j),
+// minClearance(e).
+template <class View>
+void joinChains(const View& g, std::vector<GraphEditor::Vertex>& new_vertices,
+                std::vector<GraphEditor::Edge>& new_edges)
+{
+    using Edge = GraphEditor::Edge;
+    const int nv = g.numVertices(), ne = g.numEdges();
+    std::vector<char> anchor(nv, 0), used(ne, 0);
     for (int v = 0; v < nv; ++v)
     {
-        const auto& inc = m_v[v].edges;
+        const auto& inc = g.incident(v);
         // A degree-2 vertex on its own loop (a pure ring's vertex) stays a vertex.
-        anchor[v] = m_v[v].alive && (inc.size() != 2 || inc[0] == inc[1]);
+        anchor[v] = g.alive(v) && (inc.size() != 2 || inc[0] == inc[1]);
     }
 
-    std::vector<Edge> new_edges;
     // Follows edge e0 from vertex v0 through degree-2 vertices up to the next anchor.
     auto trace = [&](int v0, int e0)
     {
         Edge out;
         out.a = v0;
-        out.path = {m_v[v0].pos};
-        out.clearance = {m_v[v0].clearance};
+        out.path = {g.pos(v0)};
+        out.clearance = {g.clearance(v0)};
         out.min_clearance = std::numeric_limits<double>::infinity();
         int v = v0, e = e0;
         for (;;)
         {
             used[e] = 1;
-            const Edge& E = m_e[e];
-            const bool forward = E.a == v;
-            const std::size_t n = E.path.size();
+            const bool forward = g.edgeA(e) == v;
+            const std::size_t n = g.pathSize(e);
             for (std::size_t k = 1; k < n; ++k)
             {
                 const std::size_t j = forward ? k : n - 1 - k;
-                out.path.push_back(E.path[j]);
-                out.clearance.push_back(E.clearance[j]);
+                out.path.push_back(g.pathPoint(e, j));
+                out.clearance.push_back(g.pathClearance(e, j));
             }
-            out.min_clearance = std::min(out.min_clearance, E.min_clearance);
-            const int w = forward ? E.b : E.a;
+            out.min_clearance = std::min(out.min_clearance, g.minClearance(e));
+            const int w = forward ? g.edgeB(e) : g.edgeA(e);
             // Stop at an anchor before looking at its edges: a dead end has only inc[0].
             if (anchor[w])
             {
                 out.b = w;
                 break;
             }
-            const auto& inc = m_v[w].edges;
+            const auto& inc = g.incident(w);
             const int next = inc[0] == e ? inc[1] : inc[0];
             if (used[next])
             {
@@ -172,38 +181,39 @@ void GraphEditor::dissolveDegreeTwo()
             v = w;
             e = next;
         }
-        out.length = pathLength(out.path);
+        double length = 0.0;
+        for (std::size_t i = 1; i < out.path.size(); ++i)
+            length += (out.path[i] - out.path[i - 1]).norm();
+        out.length = length;
         new_edges.push_back(std::move(out));
     };
 
     for (int v = 0; v < nv; ++v)
         if (anchor[v])
-            for (int e : m_v[v].edges)
+            for (int e : g.incident(v))
                 if (!used[e]) trace(v, e);
 
     // What is left are cycles of degree-2 vertices only: anchor each at its vertex of largest
     // clearance (ties: smallest position) so the choice does not depend on storage order.
-    for (int e0 = 0; e0 < static_cast<int>(m_e.size()); ++e0)
+    for (int e0 = 0; e0 < ne; ++e0)
     {
-        if (!m_e[e0].alive || used[e0]) continue;
-        int best = m_e[e0].a, v = m_e[e0].a, e = e0;
+        if (!g.edgeAlive(e0) || used[e0]) continue;
+        int best = g.edgeA(e0), v = g.edgeA(e0), e = e0;
         do
         {
-            const Edge& E = m_e[e];
-            v = E.a == v ? E.b : E.a;
-            const auto& inc = m_v[v].edges;
+            v = g.edgeA(e) == v ? g.edgeB(e) : g.edgeA(e);
+            const auto& inc = g.incident(v);
             e = inc[0] == e ? inc[1] : inc[0];
-            if (m_v[v].clearance > m_v[best].clearance ||
-                (m_v[v].clearance == m_v[best].clearance && lessPos(m_v[v].pos, m_v[best].pos)))
+            if (g.clearance(v) > g.clearance(best) ||
+                (g.clearance(v) == g.clearance(best) && lessPos(g.pos(v), g.pos(best))))
                 best = v;
         } while (e != e0);
         anchor[best] = 1;
-        trace(best, m_v[best].edges[0]);
+        trace(best, g.incident(best)[0]);
     }
 
     // Rebuild: anchors with at least one edge, renumbered in their old order.
     std::vector<int> remap(nv, -1);
-    std::vector<Vertex> new_vertices;
     for (const Edge& E : new_edges)
         for (int end : {E.a, E.b})
             if (remap[end] < 0) remap[end] = 0;  // mark: has an edge
@@ -211,9 +221,9 @@ void GraphEditor::dissolveDegreeTwo()
         if (anchor[v] && remap[v] == 0)
         {
             remap[v] = static_cast<int>(new_vertices.size());
-            Vertex nvx;
-            nvx.pos = m_v[v].pos;
-            nvx.clearance = m_v[v].clearance;
+            GraphEditor::Vertex nvx;
+            nvx.pos = g.pos(v);
+            nvx.clearance = g.clearance(v);
             new_vertices.push_back(std::move(nvx));
         }
         else
@@ -226,8 +236,107 @@ void GraphEditor::dissolveDegreeTwo()
         new_vertices[E.a].edges.push_back(i);
         new_vertices[E.b].edges.push_back(i);
     }
+}
+
+// The editor's own storage, for joinChains().
+struct EditorView
+{
+    const std::vector<GraphEditor::Vertex>& v;
+    const std::vector<GraphEditor::Edge>& e;
+    int numVertices() const { return static_cast<int>(v.size()); }
+    bool alive(int i) const { return v[i].alive; }
+    const Eigen::Vector2d& pos(int i) const { return v[i].pos; }
+    double clearance(int i) const { return v[i].clearance; }
+    const std::vector<int>& incident(int i) const { return v[i].edges; }
+    int numEdges() const { return static_cast<int>(e.size()); }
+    bool edgeAlive(int i) const { return e[i].alive; }
+    int edgeA(int i) const { return e[i].a; }
+    int edgeB(int i) const { return e[i].b; }
+    std::size_t pathSize(int i) const { return e[i].path.size(); }
+    const Eigen::Vector2d& pathPoint(int i, std::size_t j) const { return e[i].path[j]; }
+    double pathClearance(int i, std::size_t j) const { return e[i].clearance[j]; }
+    double minClearance(int i) const { return e[i].min_clearance; }
+};
+
+// Incident edges of one vertex in a shared array (compressed rows), for SkeletonView.
+struct IncidentRange
+{
+    const int* first;
+    std::size_t n;
+    std::size_t size() const { return n; }
+    int operator[](std::size_t k) const { return first[k]; }
+    const int* begin() const { return first; }
+    const int* end() const { return first + n; }
+};
+
+// The Voronoi segments as the editor would store them (vertices numbered in order of first
+// use by the segments, each segment a straight edge), without a path vector per segment.
+struct SkeletonView
+{
+    const VoronoiSkeleton& vd;
+    std::vector<int> node;            // vertex -> Voronoi node
+    std::vector<int> vertex;          // Voronoi node -> vertex (-1: unused)
+    std::vector<std::size_t> row;     // vertex -> first entry in `incident_edges`
+    std::vector<int> incident_edges;  // per vertex, its segments in order
+    explicit SkeletonView(const VoronoiSkeleton& d) : vd(d), vertex(d.node_pos.size(), -1)
+    {
+        for (const auto& s : vd.edges)
+            for (int n : {s.a, s.b})
+                if (vertex[n] < 0)
+                {
+                    vertex[n] = static_cast<int>(node.size());
+                    node.push_back(n);
+                }
+        row.assign(node.size() + 1, 0);
+        for (const auto& s : vd.edges) ++row[vertex[s.a] + 1], ++row[vertex[s.b] + 1];
+        for (std::size_t i = 1; i < row.size(); ++i) row[i] += row[i - 1];
+        incident_edges.resize(row.back());
+        std::vector<std::size_t> next(row.begin(), row.end() - 1);
+        for (int i = 0; i < static_cast<int>(vd.edges.size()); ++i)
+        {
+            incident_edges[next[vertex[vd.edges[i].a]]++] = i;
+            incident_edges[next[vertex[vd.edges[i].b]]++] = i;
+        }
+    }
+    int numVertices() const { return static_cast<int>(node.size()); }
+    bool alive(int) const { return true; }
+    const Eigen::Vector2d& pos(int i) const { return vd.node_pos[node[i]]; }
+    double clearance(int i) const { return vd.node_clearance[node[i]]; }
+    IncidentRange incident(int i) const
+    {
+        return {incident_edges.data() + row[i], row[i + 1] - row[i]};
+    }
+    int numEdges() const { return static_cast<int>(vd.edges.size()); }
+    bool edgeAlive(int) const { return true; }
+    int edgeA(int i) const { return vertex[vd.edges[i].a]; }
+    int edgeB(int i) const { return vertex[vd.edges[i].b]; }
+    std::size_t pathSize(int) const { return 2; }
+    const Eigen::Vector2d& pathPoint(int i, std::size_t j) const
+    {
+        return vd.node_pos[j == 0 ? vd.edges[i].a : vd.edges[i].b];
+    }
+    double pathClearance(int i, std::size_t j) const
+    {
+        return vd.node_clearance[j == 0 ? vd.edges[i].a : vd.edges[i].b];
+    }
+    double minClearance(int i) const { return vd.edges[i].min_clearance; }
+};
+}  // namespace
+
+void GraphEditor::dissolveDegreeTwo()
+{
+    std::vector<Vertex> new_vertices;
+    std::vector<Edge> new_edges;
+    joinChains(EditorView{m_v, m_e}, new_vertices, new_edges);
     m_v = std::move(new_vertices);
     m_e = std::move(new_edges);
+}
+
+GraphEditor GraphEditor::fromSkeleton(const VoronoiSkeleton& vd)
+{
+    GraphEditor g;
+    joinChains(SkeletonView(vd), g.m_v, g.m_e);
+    return g;
 }
 
 std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio, double disc_ratio,

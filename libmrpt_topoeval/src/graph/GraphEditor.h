@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "skeleton/voronoi_cgal.h"
+
 namespace mrpt_topoeval::internal
 {
 class GraphEditor
@@ -33,6 +35,13 @@ public:
     int addVertex(const Eigen::Vector2d& pos, double clearance);
     /** A straight edge a-b (one Voronoi segment). */
     int addSegment(int a, int b, double min_clearance);
+
+    /** The graph of the Voronoi segments with every chain through degree-2 nodes joined into
+     * one edge: the same graph as addVertex() for each node in order of first use by the
+     * segments (a segment's a before its b), addSegment() for each segment, then
+     * dissolveDegreeTwo(), without the two vectors per segment that those store (a 10^8-cell
+     * map has millions of segments; that step took 1.7 of its 10.6 s, doc/performance.md). */
+    static GraphEditor fromSkeleton(const VoronoiSkeleton& vd);
 
     int degree(int v) const { return static_cast<int>(m_v[v].edges.size()); }
     const std::vector<Vertex>& vertices() const { return m_v; }

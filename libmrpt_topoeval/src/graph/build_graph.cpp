@@ -386,17 +386,7 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
 
     // Paper II-B: vertices of degree 1 or > 2 become graph vertices, degree-2 chains merge into
     // edges that keep their polyline path.
-    internal::GraphEditor g;
-    {
-        std::vector<int> vmap(vd.node_pos.size(), -1);
-        auto vertexOf = [&](int n)
-        {
-            if (vmap[n] < 0) vmap[n] = g.addVertex(vd.node_pos[n], vd.node_clearance[n]);
-            return vmap[n];
-        };
-        for (const auto& e : vd.edges) g.addSegment(vertexOf(e.a), vertexOf(e.b), e.min_clearance);
-    }
-    g.dissolveDegreeTwo();
+    internal::GraphEditor g = internal::GraphEditor::fromSkeleton(vd);
     stats.vertices_initial = g.numAliveVertices();
     timer.lap("chains");
     const internal::CellToWorld to_world{grid.idx2x(0), grid.idx2y(0), res};
