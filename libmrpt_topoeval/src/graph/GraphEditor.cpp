@@ -17,6 +17,14 @@ bool lessPos(const Eigen::Vector2d& p, const Eigen::Vector2d& q)
     return std::tie(p.x(), p.y()) < std::tie(q.x(), q.y());
 }
 
+// Length of a polyline [cells].
+double polylineLength(const std::vector<Eigen::Vector2d>& path)
+{
+    double len = 0.0;
+    for (std::size_t i = 1; i < path.size(); ++i) len += (path[i] - path[i - 1]).norm();
+    return len;
+}
+
 struct UnionFind
 {
     explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
@@ -67,9 +75,7 @@ std::size_t GraphEditor::numAliveVertices() const
 
 double GraphEditor::pathLength(const std::vector<Eigen::Vector2d>& path)
 {
-    double len = 0.0;
-    for (std::size_t i = 1; i < path.size(); ++i) len += (path[i] - path[i - 1]).norm();
-    return len;
+    return polylineLength(path);
 }
 
 void GraphEditor::removeEdge(int e)
@@ -181,10 +187,7 @@ void joinChains(const View& g, std::vector<GraphEditor::Vertex>& new_vertices,
             v = w;
             e = next;
         }
-        double length = 0.0;
-        for (std::size_t i = 1; i < out.path.size(); ++i)
-            length += (out.path[i] - out.path[i - 1]).norm();
-        out.length = length;
+        out.length = polylineLength(out.path);
         new_edges.push_back(std::move(out));
     };
 
