@@ -229,49 +229,53 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     // the other; part_of() alone names the first part with free space there, which put a
     // vertex drawn by part 1's walls 5.5 m from its true place on the Gazebo office (session
     // 17). So a vertex belongs to each part with a quarter of those walls and to part_of().
-    std::vector<std::uint8_t> occupied_cells(static_cast<std::size_t>(dsx) * dsy, 0);
-    for (int cy = 0; cy < dsy; ++cy)
-        for (int cx = 0; cx < dsx; ++cx)
-            occupied_cells[static_cast<std::size_t>(cy) * dsx + cx] =
-                v.map.getCell(cx, cy) < 0.35f ? 1 : 0;
-    auto shared_occupied =
-        std::make_shared<const std::vector<std::uint8_t>>(std::move(occupied_cells));
-    v.truth.vertex_parts = [part_of, shared_inv, shared_cells, shared_occupied, idx](
-                               const Eigen::Vector2d& q, double clearance_m)
+    // One part (a rigid or resampled copy): `mapping` alone.
+    if (parts.size() > 1)
     {
-        const double reach = std::max(0.0, clearance_m) + 1.5 * idx.res;
-        const int r = static_cast<int>(std::ceil(reach / idx.res));
-        const int qx = static_cast<int>(std::floor((q.x() - idx.x_min) / idx.res));
-        const int qy = static_cast<int>(std::floor((q.y() - idx.y_min) / idx.res));
-        std::vector<int> votes(shared_inv->size(), 0);
-        int total = 0;
-        for (int y = std::max(0, qy - r); y <= std::min(idx.size_y - 1, qy + r); ++y)
-            for (int x = std::max(0, qx - r); x <= std::min(idx.size_x - 1, qx + r); ++x)
-            {
-                const auto c = static_cast<std::size_t>(y) * idx.size_x + x;
-                const int part = (*shared_cells)[c];
-                if (!(*shared_occupied)[c] || part < 0) continue;
-                const Eigen::Vector2d centre(idx.x_min + (x + 0.5) * idx.res,
-                                             idx.y_min + (y + 0.5) * idx.res);
-                if ((centre - q).norm() > reach) continue;
-                ++votes[static_cast<std::size_t>(part)];
-                ++total;
-            }
-        std::vector<int> order;
-        for (std::size_t i = 0; i < votes.size(); ++i)
-            if (total > 0 && 4 * votes[i] >= total) order.push_back(static_cast<int>(i));
-        std::stable_sort(order.begin(), order.end(),
-                         [&](int a, int b) { return votes[a] > votes[b]; });
-        // The part whose free space holds the vertex too: walls of a part that ends at unknown
-        // space there are not occupied cells.
-        const int holder = part_of(q);
-        if (holder >= 0 && std::find(order.begin(), order.end(), holder) == order.end())
-            order.push_back(holder);
-        std::vector<std::pair<int, Eigen::Vector2d>> places;
-        for (int i : order)
-            places.emplace_back(i, (*shared_inv)[static_cast<std::size_t>(i)].apply(q));
-        return places;
-    };
+        std::vector<std::uint8_t> occupied_cells(static_cast<std::size_t>(dsx) * dsy, 0);
+        for (int cy = 0; cy < dsy; ++cy)
+            for (int cx = 0; cx < dsx; ++cx)
+                occupied_cells[static_cast<std::size_t>(cy) * dsx + cx] =
+                    v.map.getCell(cx, cy) < 0.35f ? 1 : 0;
+        auto shared_occupied =
+            std::make_shared<const std::vector<std::uint8_t>>(std::move(occupied_cells));
+        v.truth.vertex_parts = [part_of, shared_inv, shared_cells, shared_occupied, idx](
+                                   const Eigen::Vector2d& q, double clearance_m)
+        {
+            const double reach = std::max(0.0, clearance_m) + 1.5 * idx.res;
+            const int r = static_cast<int>(std::ceil(reach / idx.res));
+            const int qx = static_cast<int>(std::floor((q.x() - idx.x_min) / idx.res));
+            const int qy = static_cast<int>(std::floor((q.y() - idx.y_min) / idx.res));
+            std::vector<int> votes(shared_inv->size(), 0);
+            int total = 0;
+            for (int y = std::max(0, qy - r); y <= std::min(idx.size_y - 1, qy + r); ++y)
+                for (int x = std::max(0, qx - r); x <= std::min(idx.size_x - 1, qx + r); ++x)
+                {
+                    const auto c = static_cast<std::size_t>(y) * idx.size_x + x;
+                    const int part = (*shared_cells)[c];
+                    if (!(*shared_occupied)[c] || part < 0) continue;
+                    const Eigen::Vector2d centre(idx.x_min + (x + 0.5) * idx.res,
+                                                 idx.y_min + (y + 0.5) * idx.res);
+                    if ((centre - q).norm() > reach) continue;
+                    ++votes[static_cast<std::size_t>(part)];
+                    ++total;
+                }
+            std::vector<int> order;
+            for (std::size_t i = 0; i < votes.size(); ++i)
+                if (total > 0 && 4 * votes[i] >= total) order.push_back(static_cast<int>(i));
+            std::stable_sort(order.begin(), order.end(),
+                             [&](int a, int b) { return votes[a] > votes[b]; });
+            // The part whose free space holds the vertex too: walls of a part that ends at unknown
+            // space there are not occupied cells.
+            const int holder = part_of(q);
+            if (holder >= 0 && std::find(order.begin(), order.end(), holder) == order.end())
+                order.push_back(holder);
+            std::vector<std::pair<int, Eigen::Vector2d>> places;
+            for (int i : order)
+                places.emplace_back(i, (*shared_inv)[static_cast<std::size_t>(i)].apply(q));
+            return places;
+        };
+    }
     v.truth.keeps_free_space = true;
     v.truth.forward = [shared_parts](const Eigen::Vector2d& p)
     {
@@ -310,7 +314,6 @@ Variant makeRigid(const COccupancyGridMap2D& gt, double yaw_rad, const Eigen::Ve
     t.t_m = shift_m;
     Variant v = warpGrid(gt, {wholeMap(t)});
     v.truth.part_of = nullptr;  // one part: not a broken map
-    v.truth.vertex_parts = nullptr;
     v.truth.part_yaw_deg.clear();
     return v;
 }
@@ -319,7 +322,6 @@ Variant makeResampled(const COccupancyGridMap2D& gt, double resolution_m)
 {
     Variant v = warpGrid(gt, {wholeMap(Rigid2D{})}, resolution_m);
     v.truth.part_of = nullptr;
-    v.truth.vertex_parts = nullptr;
     v.truth.part_yaw_deg.clear();
     return v;
 }
