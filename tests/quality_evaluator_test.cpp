@@ -267,6 +267,44 @@ TEST(QualityEvaluator, BrokenOnceTwiceThrice)
     }
 }
 
+// A part's turn is reported from the walls around its vertices (brokenness_wall_margin_m):
+// the vertices alone slide along the medial axis and leave a part's fit a few tenths of a
+// degree off; the walls pin it to a few hundredths.
+TEST(QualityEvaluator, APartsTurnComesFromItsWalls)
+{
+    const auto campus = makeCampusMap();
+    for (int n = 1; n <= 2; ++n)
+    {
+        const auto broken = brokenCampus(n);
+        std::vector<double> expected = {0.0};
+        double acc = 0.0;
+        for (int k = 0; k < n; ++k) expected.push_back(-(acc += kBreaks[k].yaw_deg));
+        auto worstError = [&](double margin_m)
+        {
+            Parameters params;
+            params.quality.brokenness_wall_margin_m = margin_m;
+            const QualityReport r = evaluate(campus, broken, params);
+            EXPECT_EQ(r.brokenness.degree, n);
+            double worst = 0.0;
+            for (const auto& grp : r.brokenness.groups)
+            {
+                double best = 1e9;
+                for (double e : expected)
+                    best =
+                        std::min(best, std::abs(std::remainder(grp.transform.yaw_deg - e, 360.0)));
+                worst = std::max(worst, best);
+            }
+            return worst;
+        };
+        const double walls = worstError(1.0), vertices = worstError(0.0);
+        if (std::getenv("TOPOEVAL_DEBUG"))
+            std::cout << "broken " << n << ": worst group yaw error " << vertices
+                      << " deg from the vertices, " << walls << " deg from the walls\n";
+        EXPECT_LE(walls, 0.05) << "broken " << n;
+        EXPECT_LT(walls, vertices) << "broken " << n;
+    }
+}
+
 TEST(QualityEvaluator, WorseMapsScoreLower)
 {
     const auto campus = makeCampusMap();
@@ -543,7 +581,11 @@ TEST(QualityEvaluator, SmallTurnedPartCountsWhenClearlySeparate)
     match.isomorphism_sizes = {match.pairs.size()};
 
     const TopologyGraph m = turned(20.0);
-    const QualityReport r = evaluateMatch(g, m, match);
+    // Only the vertices are turned, not the walls around them: the part's turn is the
+    // vertices' fit here (brokenness_wall_margin_m = 0), as it is for a map without walls.
+    QualityParameters vertices_only;
+    vertices_only.brokenness_wall_margin_m = 0.0;
+    const QualityReport r = evaluateMatch(g, m, match, vertices_only);
     if (std::getenv("TOPOEVAL_DEBUG")) std::cout << r.fullReport();
     ASSERT_EQ(r.brokenness.degree, 1);
     const auto& part = r.brokenness.groups.back();

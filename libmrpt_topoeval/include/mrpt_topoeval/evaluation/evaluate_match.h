@@ -39,6 +39,14 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
      * squared error stays within the threshold. 1.5 and 2 give the same corpus results, 2.5
      * keeps one such pair (doc/quality.md). 0 = the paper's groups [ratio]. */
     double brokenness_outlier_ratio = 2.0;
+    /** Each counted group's transform (its part's turn and shift, as reported) is refined by
+     * aligning the walls around its vertices with ICP (MRPT's CICP, from the vertices' fit):
+     * the walls within a vertex's clearance plus this margin, in both maps. A few vertices
+     * that slide along the medial axis fix a part's turn to about 0.3 degrees, hundreds of
+     * wall points to about 0.02 (doc/quality.md). Kept only when it still places the group's
+     * vertices within brokenness_max_squared_error_m2. Membership is decided before, by the
+     * vertices alone. 0 = the paper's vertex fit [m]. */
+    double brokenness_wall_margin_m = 1.0;
     /** A pair's position error up to this share of its vertices' clearance (the larger of the
      * two) is vertex jitter, not map error: a vertex in a room sits on the medial axis, which
      * slides with furniture, noise and resolution by a fraction of the room's half width.
