@@ -111,12 +111,6 @@ std::vector<ConsistencyClass> localConsistency(const TopologyGraph& gt, const To
     return cls;
 }
 
-// Ours (brokenness_wall_margin_m): a group's transform from the walls around its vertices. The
-// vertices' fit decides the group; its turn is then as good as a few vertices that slide along
-// the medial axis (0.1-0.2 degrees typically, 2-5 degrees on a small part near its cut), while
-// the walls around them hold hundreds of points. ICP (MRPT's CICP, classic) from the vertices'
-// fit, its first matching distance the error that fit allows, halved down to two cells.
-constexpr int kWallIcpIterations = 60;
 // The 95 % quantile of Fisher's F distribution with 3 and `dof` degrees of freedom (tables;
 // between rows, the next smaller dof, which is larger: conservative).
 double f3Quantile95(int dof)
@@ -130,6 +124,13 @@ double f3Quantile95(int dof)
         if (dof >= d) q = v;
     return q;
 }
+
+// Ours (brokenness_wall_margin_m): a group's transform from the walls around its vertices. The
+// vertices' fit decides the group; its turn is then as good as a few vertices that slide along
+// the medial axis (0.1-0.2 degrees typically, 2-5 degrees on a small part near its cut), while
+// the walls around them hold hundreds of points. ICP (MRPT's CICP, classic) from the vertices'
+// fit, its first matching distance the error that fit allows, halved down to two cells.
+constexpr int kWallIcpIterations = 60;
 constexpr std::size_t kMinWallPoints = 20;  // fewer: no refinement (a bare plan's few walls)
 Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
                            const internal::WallIndex& gt_walls,
@@ -474,7 +475,8 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     // Ours: each counted part's turn and shift from its walls (brokenness_wall_margin_m). The
     // groups are decided; only the reported transforms change (the squared error stays the
     // vertices' fit's, the paper's figure).
-    if (p.brokenness_wall_margin_m > 0.0 && !b.groups.empty())
+    if (p.brokenness_wall_margin_m > 0.0 && !b.groups.empty() && !gt.wall_points_m.empty() &&
+        !map.wall_points_m.empty())
     {
         const internal::WallIndex gt_walls(gt.wall_points_m), map_walls(map.wall_points_m);
         for (auto& g : b.groups)
