@@ -113,33 +113,36 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                                                 : truth.mapping(v.position_m);
             if (q) own.emplace_back(truth.part_of ? truth.part_of(v.position_m) : -1, *q);
         }
-    // The part by which map vertex m stands for ground-truth vertex g (-2: it does not).
+    // The part by which map vertex m stands for ground-truth vertex g (kNotTrue: it does not;
+    // -1: a truth without parts).
+    constexpr int kNotTrue = -2;
     auto trueBy = [&](int g, int m)
     {
         const auto& gv = gt.vertices[static_cast<std::size_t>(g)];
         const double tol = CaseScore::pairTolerance(gv, map.vertices[static_cast<std::size_t>(m)]);
         for (const auto& [part, q] : places[static_cast<std::size_t>(m)])
             if ((q - gv.position_m).norm() <= tol) return part;
-        return -2;
+        return kNotTrue;
     };
-    auto isTrue = [&](int g, int m) { return trueBy(g, m) != -2; };
     std::map<int, int> counterparts_per_part;
     for (const auto& g : gt.vertices)
     {
         if (g.spurious) continue;
         for (const auto& m : map.vertices)
-            if (!m.spurious && isTrue(g.id, m.id))
-            {
-                ++s.gt_with_counterpart;
-                if (truth.part_of) ++counterparts_per_part[trueBy(g.id, m.id)];
-                break;
-            }
+        {
+            const int by = m.spurious ? kNotTrue : trueBy(g.id, m.id);
+            if (by == kNotTrue) continue;
+            ++s.gt_with_counterpart;
+            if (truth.part_of) ++counterparts_per_part[by];
+            break;
+        }
     }
     std::map<int, int> true_per_part;
     for (const auto& p : report.match.pairs)
     {
         ++s.matched;
-        if (!isTrue(p.ground_truth, p.map))
+        const int by = trueBy(p.ground_truth, p.map);
+        if (by == kNotTrue)
         {
             const auto& own = places[static_cast<std::size_t>(p.map)];
             const Eigen::Vector2d* q = own.empty() ? nullptr : &own.front().second;
@@ -171,7 +174,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             continue;
         }
         ++s.true_pairs;
-        if (truth.part_of) ++true_per_part[trueBy(p.ground_truth, p.map)];
+        if (truth.part_of) ++true_per_part[by];
     }
     if (truth.part_of && truth.injected_breaks >= 0)
     {
@@ -219,7 +222,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                 // A true pair's part is the one that makes it true; else the likeliest.
                 const int by = trueBy(g, m);
                 const auto& own = places[static_cast<std::size_t>(m)];
-                ++votes[by != -2 ? by : own.empty() ? -1 : own.front().first];
+                ++votes[by != kNotTrue ? by : own.empty() ? -1 : own.front().first];
             }
             int part = -1, best = 0;
             for (const auto& [k, n] : votes)

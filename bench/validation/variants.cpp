@@ -153,6 +153,8 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     // The part each target cell took its value from (an obstacle's part wins, as the cell
     // does): in overlaps the truth of a cell is the part that put its wall there.
     std::vector<std::int8_t> cell_part(static_cast<std::size_t>(dsx) * dsy, -1);
+    // The part whose wall a cell is (-1: no wall): a topology vertex's walls name its part.
+    std::vector<std::int8_t> wall_part(cell_part.size(), -1);
     for (int cy = 0; cy < dsy; ++cy)
         for (int cx = 0; cx < dsx; ++cx)
         {
@@ -195,6 +197,7 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
                 static_cast<std::int8_t>(occ_part >= 0    ? occ_part
                                          : free_part >= 0 ? free_part
                                                           : seen_part);
+            wall_part[static_cast<std::size_t>(cy) * dsx + cx] = static_cast<std::int8_t>(occ_part);
             if (occ_part >= 0)
                 v.map.setCell(cx, cy, 0.0f);
             else if (free_part >= 0)
@@ -232,15 +235,9 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     // One part (a rigid or resampled copy): `mapping` alone.
     if (parts.size() > 1)
     {
-        std::vector<std::uint8_t> occupied_cells(static_cast<std::size_t>(dsx) * dsy, 0);
-        for (int cy = 0; cy < dsy; ++cy)
-            for (int cx = 0; cx < dsx; ++cx)
-                occupied_cells[static_cast<std::size_t>(cy) * dsx + cx] =
-                    v.map.getCell(cx, cy) < 0.35f ? 1 : 0;
-        auto shared_occupied =
-            std::make_shared<const std::vector<std::uint8_t>>(std::move(occupied_cells));
-        v.truth.vertex_parts = [part_of, shared_inv, shared_cells, shared_occupied, idx](
-                                   const Eigen::Vector2d& q, double clearance_m)
+        auto shared_walls = std::make_shared<const std::vector<std::int8_t>>(std::move(wall_part));
+        v.truth.vertex_parts =
+            [part_of, shared_inv, shared_walls, idx](const Eigen::Vector2d& q, double clearance_m)
         {
             const double reach = std::max(0.0, clearance_m) + 1.5 * idx.res;
             const int r = static_cast<int>(std::ceil(reach / idx.res));
@@ -252,8 +249,8 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
                 for (int x = std::max(0, qx - r); x <= std::min(idx.size_x - 1, qx + r); ++x)
                 {
                     const auto c = static_cast<std::size_t>(y) * idx.size_x + x;
-                    const int part = (*shared_cells)[c];
-                    if (!(*shared_occupied)[c] || part < 0) continue;
+                    const int part = (*shared_walls)[c];
+                    if (part < 0) continue;
                     const Eigen::Vector2d centre(idx.x_min + (x + 0.5) * idx.res,
                                                  idx.y_min + (y + 0.5) * idx.res);
                     if ((centre - q).norm() > reach) continue;

@@ -15,7 +15,6 @@
 #include <limits>
 #include <queue>
 #include <sstream>
-#include <tuple>
 
 #include "geometry/horn.h"
 #include "graph/MatchView.h"
@@ -138,25 +137,19 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
                            const std::vector<std::pair<int, int>>& pairs, const Transform2D& fit,
                            const QualityParameters& p)
 {
-    // The wall points within a vertex's clearance + margin, each once.
-    auto around = [&](const TopologyGraph& g, bool ground_truth)
+    // Every wall point within a vertex's clearance + margin (not thinned: ICP wants them all).
+    auto around = [&](const TopologyGraph& g, const internal::WallIndex& index, bool ground_truth)
     {
-        const internal::WallIndex& index = ground_truth ? gt_walls : map_walls;
-        std::vector<Eigen::Vector2d> pts;
-        for (const auto& [a, b] : pairs)
-        {
-            const TopoVertex& v = g.vertices[static_cast<std::size_t>(ground_truth ? a : b)];
-            index.collect(v.position_m, v.clearance_m + p.brokenness_wall_margin_m, pts);
-        }
-        std::sort(pts.begin(), pts.end(),
-                  [](const auto& x, const auto& y)
-                  { return std::tie(x.x(), x.y()) < std::tie(y.x(), y.y()); });
-        pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+        std::vector<int> vertices;
+        for (const auto& [a, b] : pairs) vertices.push_back(ground_truth ? a : b);
         mrpt::maps::CSimplePointsMap cloud;
-        for (const auto& q : pts) cloud.insertPoint(float(q.x()), float(q.y()), 0.0f);
+        for (const auto& q :
+             internal::wallsAround(g, index, vertices, p.brokenness_wall_margin_m, 0))
+            cloud.insertPoint(float(q.x()), float(q.y()), 0.0f);
         return cloud;
     };
-    const mrpt::maps::CSimplePointsMap walls_gt = around(gt, true), walls_map = around(map, false);
+    const mrpt::maps::CSimplePointsMap walls_gt = around(gt, gt_walls, true),
+                                       walls_map = around(map, map_walls, false);
     if (walls_gt.size() < kMinWallPoints || walls_map.size() < kMinWallPoints) return fit;
     const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
     mrpt::slam::CICP::TConfigParams o;

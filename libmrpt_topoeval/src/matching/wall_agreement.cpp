@@ -32,12 +32,13 @@ void WallIndex::collect(const Eigen::Vector2d& p, double r, std::vector<Eigen::V
 
 namespace
 {
-/** Wall points around the given vertices, without repeats, evenly thinned to at most this
- * many: the share is a mean, and a few hundred points give it to a few percent. */
+/** The walls compared for the share: a few hundred points give a mean to a few percent. */
 constexpr std::size_t kMaxWallPoints = 400;
+}  // namespace
 
 std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex& walls,
-                                         const std::vector<int>& vertices, double margin_m)
+                                         const std::vector<int>& vertices, double margin_m,
+                                         std::size_t max_points)
 {
     std::vector<Eigen::Vector2d> pts;
     for (int v : vertices)
@@ -46,16 +47,15 @@ std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex
     { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
     std::sort(pts.begin(), pts.end(), less);
     pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-    if (pts.size() > kMaxWallPoints)
+    if (max_points > 0 && pts.size() > max_points)
     {
         std::vector<Eigen::Vector2d> thin;
-        for (std::size_t k = 0; k < kMaxWallPoints; ++k)
-            thin.push_back(pts[k * pts.size() / kMaxWallPoints]);
+        for (std::size_t k = 0; k < max_points; ++k)
+            thin.push_back(pts[k * pts.size() / max_points]);
         pts.swap(thin);
     }
     return pts;
 }
-}  // namespace
 
 WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
                             const WallIndex& gt_walls, const WallIndex& map_walls,
@@ -65,8 +65,10 @@ WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
     WallAgreement out;
     std::vector<int> gv, mv;
     for (const auto& [a, b] : pairs) gv.push_back(a), mv.push_back(b);
-    const std::vector<Eigen::Vector2d> from_gt = wallsAround(gt, gt_walls, gv, margin_m);
-    const std::vector<Eigen::Vector2d> from_map = wallsAround(map, map_walls, mv, margin_m);
+    const std::vector<Eigen::Vector2d> from_gt =
+        wallsAround(gt, gt_walls, gv, margin_m, kMaxWallPoints);
+    const std::vector<Eigen::Vector2d> from_map =
+        wallsAround(map, map_walls, mv, margin_m, kMaxWallPoints);
     if (from_gt.empty() || from_map.empty()) return out;
     // The share under the fit moved by `shift` (in the ground truth's frame).
     const double yaw = mrpt::DEG2RAD(gt_T_map.yaw_deg);

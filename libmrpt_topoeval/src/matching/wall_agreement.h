@@ -43,6 +43,12 @@ struct WallAgreement
     double pinning = 1.0;
 };
 
+/** The wall points within each of `vertices`' clearance + `margin_m`, without repeats, sorted
+ * by position; evenly thinned to `max_points` when there are more (0: all). */
+std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex& walls,
+                                         const std::vector<int>& vertices, double margin_m,
+                                         std::size_t max_points);
+
 /** The agreement of the walls around `pairs` (ground-truth vertex, map vertex) under
  * `gt_T_map` (map to ground truth). */
 WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
