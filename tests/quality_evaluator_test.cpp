@@ -213,6 +213,95 @@ TEST(QualityEvaluator, OneWrongPairDoesNotTurnAPart)
     EXPECT_GT(groupTurn(paper), 2.0);
 }
 
+// A pair's error is measured at its walls (pair_wall_margin_m): a vertex of a room slides along
+// the medial axis between two maps of it by a fraction of the room's half width, its walls do
+// not. Nine rooms (boxes 2 m wide, 3 m apart), each vertex in its room's middle; the map is the
+// same turned by 30 degrees and shifted. Known answers: (a) one map vertex slid 0.3 m in its
+// room, walls exact: error 0 at the walls, not at the vertices; (b) one room, walls and vertex,
+// 0.2 m off: the walls give the vertices' own figure; (c) a wrong pair (the map vertex in the
+// next room) is not made right by walls: it keeps its vertex error, clipped at
+// outlier_distance_m.
+TEST(QualityEvaluator, APairsErrorIsMeasuredAtItsWalls)
+{
+    std::vector<Eigen::Vector2d> at;
+    std::vector<std::pair<int, int>> edges;
+    for (int k = 0; k < 9; ++k)
+    {
+        at.emplace_back(3.0 * (k % 3), 3.0 * (k / 3));
+        if (k % 3) edges.emplace_back(k - 1, k);
+        if (k >= 3) edges.emplace_back(k - 3, k);
+    }
+    const std::size_t n = at.size();
+    const Transform2D turn{4.0, -3.0, 30.0};  // ground truth -> map
+    auto addBox =
+        [](const Transform2D& T, const Eigen::Vector2d& c, std::vector<Eigen::Vector2f>& out)
+    {
+        for (int k = -20; k <= 20; ++k)
+        {
+            const double u = 0.05 * k;
+            for (const Eigen::Vector2d& q : {Eigen::Vector2d(u, -1.0), Eigen::Vector2d(u, 1.0),
+                                             Eigen::Vector2d(-1.0, u), Eigen::Vector2d(1.0, u)})
+                out.push_back(T.apply(c + q).cast<float>());
+        }
+    };
+    // room_offset: where each room (walls and vertex) lies off in the map, in the ground
+    // truth's frame; vertex_slide: how far each map vertex slid from its room's middle.
+    auto graphs = [&](const std::vector<Eigen::Vector2d>& room_offset,
+                      const std::vector<Eigen::Vector2d>& vertex_slide)
+    {
+        std::vector<Eigen::Vector2d> moved;
+        for (std::size_t i = 0; i < n; ++i)
+            moved.push_back(turn.apply(at[i] + room_offset[i] + vertex_slide[i]));
+        TopologyGraph g = handGraph(at, edges), m = handGraph(moved, edges);
+        g.map.resolution_m = m.map.resolution_m = 0.05;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            addBox(Transform2D{}, at[i], g.wall_points_m);
+            addBox(turn, at[i] + room_offset[i], m.wall_points_m);
+        }
+        return std::make_pair(g, m);
+    };
+    GraphMatch match;
+    for (int i = 0; i < int(n); ++i) match.pairs.push_back({i, i, MatchStage::Isomorphism, 1.0, 0});
+    match.isomorphism = int(n);
+    match.isomorphism_sizes = {n};
+    QualityParameters walls, vertices;
+    vertices.pair_wall_margin_m = 0.0;
+    walls.vertex_slack_share = vertices.vertex_slack_share = 0.0;
+    const std::vector<Eigen::Vector2d> none(n, Eigen::Vector2d::Zero());
+
+    // (a) Vertex 4 slid 0.3 m along its room.
+    auto slid = none;
+    slid[4] = {0.3, 0.0};
+    const auto [ga, ma] = graphs(none, slid);
+    const QualityReport a_walls = evaluateMatch(ga, ma, match, walls),
+                        a_vertices = evaluateMatch(ga, ma, match, vertices);
+    EXPECT_EQ(a_walls.relative_accuracy.by_walls, n);
+    EXPECT_EQ(a_vertices.relative_accuracy.by_walls, 0u);
+    EXPECT_LT(a_walls.relative_accuracy.rmse_m, 0.01);
+    EXPECT_GT(a_vertices.relative_accuracy.rmse_m, 0.08);
+    for (const auto& c : a_walls.local_consistency) EXPECT_LT(c.mean_error_m, 0.01) << c.name;
+
+    // (b) Room 8 (walls and vertex) 0.2 m off: the map's own error, as its vertices show it.
+    auto off = none;
+    off[8] = {0.0, 0.2};
+    const auto [gb, mb] = graphs(off, none);
+    const QualityReport b_walls = evaluateMatch(gb, mb, match, walls),
+                        b_vertices = evaluateMatch(gb, mb, match, vertices);
+    EXPECT_GT(b_vertices.relative_accuracy.rmse_m, 0.05);
+    EXPECT_NEAR(b_walls.relative_accuracy.rmse_m, b_vertices.relative_accuracy.rmse_m, 0.01);
+
+    // (c) The map vertex of pair 4 sits in room 5, 3 m off: its walls put the ground-truth
+    // vertex 3 m from it, farther than its clearance, so it keeps its vertex error (clipped).
+    auto wrong = none;
+    wrong[4] = at[5] - at[4] + Eigen::Vector2d(0.0, 0.4);
+    const auto [gc, mc] = graphs(none, wrong);
+    const QualityReport c_walls = evaluateMatch(gc, mc, match, walls);
+    EXPECT_EQ(c_walls.relative_accuracy.by_walls, n - 1);
+    EXPECT_NEAR(c_walls.relative_accuracy.rmse_m, walls.outlier_distance_m / std::sqrt(double(n)),
+                0.01);
+}
+
 TEST(QualityEvaluator, RigidlyMovedMap)
 {
     const auto campus = makeCampusMap();

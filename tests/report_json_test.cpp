@@ -127,6 +127,7 @@ const char* const kTinyJsonHead = R"({
     "pairs": 3,
     "rmse_m": 0.05,
     "score": 0.9091,
+    "pairs_by_walls": 0,
     "transform": {
       "x": 1.5,
       "y": -2.25,

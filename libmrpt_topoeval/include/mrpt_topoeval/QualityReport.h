@@ -18,6 +18,9 @@ struct Accuracy
     double rmse_m = 0.0;    //!< Root mean square distance of matched vertices [m].
     double score = 0.0;     //!< In [0, 1], 1 = exact (doc/quality.md).
     Transform2D transform;  //!< Relative accuracy only: the best rigid alignment (Horn).
+    /** Relative accuracy only: pairs whose error was measured at their walls
+     * (pair_wall_margin_m), the others at their vertices. */
+    std::size_t by_walls = 0;
 };
 
 /** One class of local consistency (paper IV): ground-truth vertex pairs grouped by their

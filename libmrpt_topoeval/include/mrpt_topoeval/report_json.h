@@ -20,7 +20,8 @@ namespace mrpt_topoeval
  *   "matches": {...},          (the object of `topoeval match --json`, byte for byte)
  *   "coverage": c,
  *   "global_accuracy": {"pairs", "rmse_m", "score"},
- *   "relative_accuracy": {"pairs", "rmse_m", "score", "transform": {"x", "y", "yaw_deg"}},
+ *   "relative_accuracy": {"pairs", "rmse_m", "score", "pairs_by_walls",
+ *                         "transform": {"x", "y", "yaw_deg"}},
  *   "local_consistency": [{"class", "min_graph_distance_m", "max_graph_distance_m", "pairs",
  *                          "mean_error_m", "score"}, ...],
  *   "brokenness": {"degree", "score",

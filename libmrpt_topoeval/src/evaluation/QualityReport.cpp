@@ -48,8 +48,9 @@ std::string QualityReport::briefReport() const
          " ground-truth vertices matched: " + std::to_string(match.isomorphism) + " isomorphism, " +
          std::to_string(match.neighbour_growing) + " neighbour growing)\n";
     s += "accuracy    relative " + fmt("%.3f", relative_accuracy.rmse_m) + " m rmse (score " +
-         fmt("%.2f", relative_accuracy.score) + "), global " + fmt("%.3f", global_accuracy.rmse_m) +
-         " m rmse\n";
+         fmt("%.2f", relative_accuracy.score) + "; " + std::to_string(relative_accuracy.by_walls) +
+         " of " + std::to_string(relative_accuracy.pairs) + " pairs at their walls), global " +
+         fmt("%.3f", global_accuracy.rmse_m) + " m rmse\n";
     s += "consistency " + consistencyLine(*this) + "\n";
     const std::size_t ng = brokenness.groups.size();
     s += "brokenness  " + std::to_string(brokenness.degree) + " (" + std::to_string(ng) +

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <sstream>
 
@@ -72,8 +73,10 @@ double countedError(double error, double slack, const QualityParameters& p)
 // shortest graph distance; in each class the mean difference between the pair's geometric
 // distance in the ground truth and in the map (beyond the pairs' slack, clipped at the outlier
 // distance: doc/quality.md).
-std::vector<ConsistencyClass> localConsistency(const TopologyGraph& gt, const TopologyGraph& map,
-                                               const GraphMatch& m, const QualityParameters& p)
+std::vector<ConsistencyClass> localConsistency(const TopologyGraph& gt, const GraphMatch& m,
+                                               const std::vector<Eigen::Vector2d>& places,
+                                               const std::vector<double>& slack,
+                                               const QualityParameters& p)
 {
     std::vector<ConsistencyClass> cls = {
         {"short", 0.0, p.consistency_short_max_m, 0, 0.0, 0.0},
@@ -89,16 +92,12 @@ std::vector<ConsistencyClass> localConsistency(const TopologyGraph& gt, const To
             const double d_gt = (gt.vertices[m.pairs[i].ground_truth].position_m -
                                  gt.vertices[m.pairs[j].ground_truth].position_m)
                                     .norm();
-            const double d_map =
-                (map.vertices[m.pairs[i].map].position_m - map.vertices[m.pairs[j].map].position_m)
-                    .norm();
+            const double d_map = (places[i] - places[j]).norm();
             ConsistencyClass& c = dg < p.consistency_short_max_m    ? cls[0]
                                   : dg < p.consistency_medium_max_m ? cls[1]
                                                                     : cls[2];
             ++c.pairs;
-            c.mean_error_m += countedError(
-                std::abs(d_gt - d_map),
-                pairSlack(gt, map, m.pairs[i], p) + pairSlack(gt, map, m.pairs[j], p), p);
+            c.mean_error_m += countedError(std::abs(d_gt - d_map), slack[i] + slack[j], p);
         }
     }
     for (auto& c : cls)
@@ -124,13 +123,31 @@ double f3Quantile95(int dof)
     return q;
 }
 
+// The ICP of walls (a brokenness group's turn, a pair's place): MRPT's CICP, classic, its first
+// matching distance the error a part's fit allows (the root of brokenness_max_squared_error_m2),
+// halved down to two cells.
+constexpr int kWallIcpIterations = 60;
+constexpr std::size_t kMinWallPoints = 20;  // fewer: no refinement (a bare plan's few walls)
+mrpt::slam::CICP::TConfigParams wallIcpOptions(const TopologyGraph& gt, const TopologyGraph& map,
+                                               const QualityParameters& p)
+{
+    const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
+    mrpt::slam::CICP::TConfigParams o;
+    o.ICP_algorithm = mrpt::slam::icpClassic;
+    o.maxIterations = kWallIcpIterations;
+    o.thresholdDist = std::max(std::sqrt(p.brokenness_max_squared_error_m2), 3.0 * res);
+    o.thresholdAng = 0.0;
+    o.ALFA = 0.5;
+    o.smallestThresholdDist = 2.0 * res;
+    o.skip_cov_calculation = true;
+    o.skip_quality_calculation = true;
+    return o;
+}
+
 // Ours (brokenness_wall_margin_m): a group's transform from the walls around its vertices. The
 // vertices' fit decides the group; its turn is then as good as a few vertices that slide along
 // the medial axis (0.1-0.2 degrees typically, 2-5 degrees on a small part near its cut), while
-// the walls around them hold hundreds of points. ICP (MRPT's CICP, classic) from the vertices'
-// fit, its first matching distance the error that fit allows, halved down to two cells.
-constexpr int kWallIcpIterations = 60;
-constexpr std::size_t kMinWallPoints = 20;  // fewer: no refinement (a bare plan's few walls)
+// the walls around them hold hundreds of points. ICP from the vertices' fit.
 Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
                            const internal::WallIndex& gt_walls,
                            const internal::WallIndex& map_walls,
@@ -151,17 +168,7 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     const mrpt::maps::CSimplePointsMap walls_gt = around(gt, gt_walls, true),
                                        walls_map = around(map, map_walls, false);
     if (walls_gt.size() < kMinWallPoints || walls_map.size() < kMinWallPoints) return fit;
-    const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
-    mrpt::slam::CICP::TConfigParams o;
-    o.ICP_algorithm = mrpt::slam::icpClassic;
-    o.maxIterations = kWallIcpIterations;
-    o.thresholdDist = std::max(std::sqrt(p.brokenness_max_squared_error_m2), 3.0 * res);
-    o.thresholdAng = 0.0;
-    o.ALFA = 0.5;
-    o.smallestThresholdDist = 2.0 * res;
-    o.skip_cov_calculation = true;
-    o.skip_quality_calculation = true;
-    mrpt::slam::CICP icp(o);
+    mrpt::slam::CICP icp(wallIcpOptions(gt, map, p));
     mrpt::slam::CICP::TReturnInfo info;
     // The ground truth's walls are the reference; the map's walls' pose in its frame is the
     // map -> ground truth transform.
@@ -194,12 +201,84 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     return (sse_walls - sse_fit) / 3.0 <= f3Quantile95(dof) * sse_fit / double(dof) ? t : fit;
 }
 
+// Both graphs' wall points in KD-trees, built on first use and shared by the steps that align
+// walls (pair places, brokenness groups' turns). `ok()` is false when either graph has none.
+class Walls
+{
+public:
+    Walls(const TopologyGraph& gt, const TopologyGraph& map) : m_gt_graph(gt), m_map_graph(map) {}
+    bool ok() const
+    {
+        return !m_gt_graph.wall_points_m.empty() && !m_map_graph.wall_points_m.empty();
+    }
+    const internal::WallIndex& gt()
+    {
+        if (!m_gt) m_gt.emplace(m_gt_graph.wall_points_m);
+        return *m_gt;
+    }
+    const internal::WallIndex& map()
+    {
+        if (!m_map) m_map.emplace(m_map_graph.wall_points_m);
+        return *m_map;
+    }
+
+private:
+    const TopologyGraph &m_gt_graph, &m_map_graph;
+    std::optional<internal::WallIndex> m_gt, m_map;
+};
+
+// Ours (pair_wall_margin_m): where the map's walls put each pair's ground-truth vertex. The
+// walls around the ground-truth vertex and those around its partner are aligned by ICP from the
+// relative alignment `t`; the map point that alignment puts on the ground-truth vertex stands in
+// for the map vertex in relative accuracy and local consistency, with no slack: a vertex slides
+// along the medial axis of its room between two maps, its walls stay. Kept only within the
+// larger clearance of the two vertices (farther, ICP was caught by other walls: the vertex
+// cannot have slid that far from its place). `places` and `slack` come in as the vertices'.
+void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& m,
+                  const Transform2D& t, const QualityParameters& p, Walls& walls,
+                  std::vector<Eigen::Vector2d>& places, std::vector<double>& slack,
+                  std::size_t& by_walls)
+{
+    by_walls = 0;
+    if (!(p.pair_wall_margin_m > 0.0) || !walls.ok()) return;
+    const internal::WallIndex &gt_walls = walls.gt(), &map_walls = walls.map();
+    mrpt::slam::CICP icp(wallIcpOptions(gt, map, p));
+    auto cloud = [&](const TopologyGraph& g, const internal::WallIndex& index, int v)
+    {
+        mrpt::maps::CSimplePointsMap c;
+        for (const auto& q : internal::wallsAround(g, index, {v}, p.pair_wall_margin_m, 0))
+            c.insertPoint(float(q.x()), float(q.y()), 0.0f);
+        return c;
+    };
+    for (std::size_t i = 0; i < m.pairs.size(); ++i)
+    {
+        const auto& a = gt.vertices[static_cast<std::size_t>(m.pairs[i].ground_truth)];
+        const auto& b = map.vertices[static_cast<std::size_t>(m.pairs[i].map)];
+        const mrpt::maps::CSimplePointsMap walls_gt = cloud(gt, gt_walls, m.pairs[i].ground_truth),
+                                           walls_map = cloud(map, map_walls, m.pairs[i].map);
+        if (walls_gt.size() < kMinWallPoints || walls_map.size() < kMinWallPoints) continue;
+        mrpt::slam::CICP::TReturnInfo info;
+        const auto pose =
+            icp.Align(&walls_gt, &walls_map,
+                      mrpt::poses::CPose2D(t.x_m, t.y_m, t.yaw_deg * M_PI / 180.0), info)
+                ->getMeanVal();
+        // The map point this alignment puts on the ground-truth vertex: pose^-1 (p_a).
+        const Eigen::Vector2d d = a.position_m - Eigen::Vector2d(pose.x(), pose.y());
+        const double c = std::cos(pose.phi()), sn = std::sin(pose.phi());
+        const Eigen::Vector2d q(c * d.x() + sn * d.y(), -sn * d.x() + c * d.y());
+        if ((q - b.position_m).norm() > std::max(a.clearance_m, b.clearance_m)) continue;
+        places[i] = q;
+        slack[i] = 0.0;
+        ++by_walls;
+    }
+}
+
 // Paper IV, brokenness: grow groups of connected matched vertices by wavefront while their
 // Horn alignment's mean squared error stays under the threshold; keep groups of at least the
 // minimum size; the degree is the number of groups minus one.
 Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                       const internal::MatchView& view, const GraphMatch& m,
-                      const QualityParameters& p)
+                      const QualityParameters& p, Walls& walls)
 {
     Brokenness b;
     if (m.pairs.empty()) return b;
@@ -468,17 +547,13 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     // Ours: each counted part's turn and shift from its walls (brokenness_wall_margin_m). The
     // groups are decided; only the reported transforms change (the squared error stays the
     // vertices' fit's, the paper's figure).
-    if (p.brokenness_wall_margin_m > 0.0 && !b.groups.empty() && !gt.wall_points_m.empty() &&
-        !map.wall_points_m.empty())
-    {
-        const internal::WallIndex gt_walls(gt.wall_points_m), map_walls(map.wall_points_m);
+    if (p.brokenness_wall_margin_m > 0.0 && !b.groups.empty() && walls.ok())
         for (auto& g : b.groups)
         {
             std::vector<std::pair<int, int>> pairs;
             for (int v : g.gt_vertices) pairs.emplace_back(v, partner[v]);
-            g.transform = refinedByWalls(gt, map, gt_walls, map_walls, pairs, g.transform, p);
+            g.transform = refinedByWalls(gt, map, walls.gt(), walls.map(), pairs, g.transform, p);
         }
-    }
     std::stable_sort(b.groups.begin(), b.groups.end(),
                      [](const auto& x, const auto& y)
                      { return x.gt_vertices.size() > y.gt_vertices.size(); });
@@ -503,7 +578,6 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     const internal::MatchView gt_view = internal::makeMatchView(ground_truth);
     r.gt_vertices = static_cast<std::size_t>(gt_view.numActive());
     r.map_vertices = static_cast<std::size_t>(internal::makeMatchView(map).numActive());
-    r.local_consistency = localConsistency(ground_truth, map, match, p);
     r.messages = match.messages;
     // Brokenness needs two groups of brokenness_min_vertices: say so when the ground truth is
     // too small for that (a bare floor plan of a few rooms), so a 0 is not read as "unbroken".
@@ -514,6 +588,7 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
                              ": brokenness cannot be measured on it");
     if (match.pairs.empty())
     {
+        r.local_consistency = localConsistency(ground_truth, match, {}, {}, p);
         r.messages.push_back("nothing was matched: coverage and quality are 0");
         return r;
     }
@@ -549,19 +624,40 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
         if (ig.size() < 3 || ig.size() == pg.size()) break;
         t = internal::hornAlign(ig, im);
     }
+    // Each pair's map place: its vertex (with the jitter slack) or, where the walls around it
+    // agree, the point they put on its ground-truth vertex (pair_wall_margin_m). The alignment
+    // is refitted to the places, without the pairs beyond the outlier distance.
+    std::vector<Eigen::Vector2d> places = pm;
+    std::vector<double> slack;
+    for (const auto& pr : match.pairs) slack.push_back(pairSlack(ground_truth, map, pr, p));
+    Walls walls(ground_truth, map);
+    placeByWalls(ground_truth, map, match, t, p, walls, places, slack,
+                 r.relative_accuracy.by_walls);
+    if (r.relative_accuracy.by_walls > 0)
+    {
+        std::vector<Eigen::Vector2d> ig, im;
+        for (std::size_t i = 0; i < pg.size(); ++i)
+            if (p.outlier_distance_m <= 0.0 ||
+                (pg[i] - t.apply(places[i])).norm() <= p.outlier_distance_m)
+            {
+                ig.push_back(pg[i]);
+                im.push_back(places[i]);
+            }
+        if (ig.size() >= 2) t = internal::hornAlign(ig, im);
+    }
     double sq = 0.0;
     for (std::size_t i = 0; i < pg.size(); ++i)
     {
-        const double e = countedError((pg[i] - t.apply(pm[i])).norm(),
-                                      pairSlack(ground_truth, map, match.pairs[i], p), p);
+        const double e = countedError((pg[i] - t.apply(places[i])).norm(), slack[i], p);
         sq += e * e;
     }
+    r.local_consistency = localConsistency(ground_truth, match, places, slack, p);
     r.relative_accuracy.pairs = pg.size();
     r.relative_accuracy.transform = t;
     r.relative_accuracy.rmse_m = std::sqrt(sq / double(pg.size()));
     r.relative_accuracy.score = invScore(r.relative_accuracy.rmse_m, p.accuracy_scale_m);
 
-    r.brokenness = brokenness(ground_truth, map, gt_view, match, p);
+    r.brokenness = brokenness(ground_truth, map, gt_view, match, p, walls);
 
     // Quality: weighted mean of coverage, relative accuracy, the mean of the non-empty
     // consistency classes, and brokenness (doc/quality.md).

@@ -58,6 +58,7 @@ void writeAccuracy(JsonWriter& w, const Accuracy& a, bool with_transform)
     w.key("score").value(a.score, kScoreDecimals);
     if (with_transform)
     {
+        w.key("pairs_by_walls").value(u64(a.by_walls));
         // T_gt_map: map coordinates into the ground truth's frame.
         w.key("transform").beginObject();
         valueIfDefined(w.key("x"), defined, a.transform.x_m, kMetreDecimals);

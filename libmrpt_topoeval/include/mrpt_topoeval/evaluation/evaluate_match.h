@@ -47,11 +47,20 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
      * vertices within brokenness_max_squared_error_m2. Membership is decided before, by the
      * vertices alone. 0 = the paper's vertex fit [m]. */
     double brokenness_wall_margin_m = 1.0;
+    /** Each pair's error in relative accuracy and local consistency is measured at its walls:
+     * the walls within the ground-truth vertex's clearance plus this margin and those within
+     * the map vertex's are aligned by ICP (MRPT's CICP, from the relative alignment), and the
+     * map point they put at the ground-truth vertex stands in for the map vertex. A vertex of
+     * an open room slides along the medial axis between two maps by a fraction of the room's
+     * half width; the walls do not. Kept only when that point lies within the larger clearance
+     * of the map vertex (ICP caught by other walls otherwise); then vertex_slack_share does not
+     * apply. 0 = the vertices' positions [m]. */
+    double pair_wall_margin_m = 1.0;
     /** A pair's position error up to this share of its vertices' clearance (the larger of the
      * two) is vertex jitter, not map error: a vertex in a room sits on the medial axis, which
      * slides with furniture, noise and resolution by a fraction of the room's half width.
-     * Relative accuracy and local consistency count only the error beyond it. 0 = the paper's
-     * plain errors [ratio]. */
+     * Relative accuracy and local consistency count only the error beyond it, for the pairs
+     * not measured at their walls (pair_wall_margin_m). 0 = the paper's plain errors [ratio]. */
     double vertex_slack_share = 0.10;
     /** A pair's error counts at most this much in relative accuracy and local consistency, and
      * the relative alignment is refitted without pairs beyond it: one wrong pair must not decide
