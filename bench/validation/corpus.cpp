@@ -224,8 +224,15 @@ Variant makeCaseMap(const Corpus& corpus, const CaseSpec& c)
         Variant v;
         v.map = std::move(run.map);
         v.truth.mapping = run.truth;
-        v.truth.source = "keyframe poses (" + std::to_string(run.true_keyframes.size()) +
-                         " keyframes, odometry drift " + fmt(run.odometry_drift_m, 2) + " m)";
+        v.truth.source =
+            "keyframe poses (" + std::to_string(run.true_keyframes.size()) +
+            " keyframes, odometry drift " + fmt(run.odometry_drift_m, 2) + " m" +
+            (run.restarted_at_waypoint > 0
+                 ? "; restarted at waypoint " + std::to_string(run.restarted_at_waypoint) + ", " +
+                       std::to_string(run.first_start_keyframes) +
+                       " keyframes from the tour's start"
+                 : std::string()) +
+            ")";
         v.truth.wall_tolerance_m = 0.15;
         return v;
     }

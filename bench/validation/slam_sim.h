@@ -25,12 +25,17 @@ struct SlamRun
     TruthMapping truth;
     std::size_t scans = 0;
     double odometry_drift_m = 0.0;  //!< Final position error of dead reckoning alone [m].
+    /** Where the drive was restarted after the tour's own start lost track (0: not restarted),
+     * and how many keyframes that first run kept. */
+    std::size_t restarted_at_waypoint = 0, first_start_keyframes = 0;
 };
 
 /** Drives `tour` through `world`, simulating a 360-degree laser and odometry with noise level
  * `noise_level` (1 low, 2 medium, 3 high; see slam_sim.cpp for the standard deviations), and
- * runs ICP-SLAM. Deterministic for (world, tour, noise_level, seed); thread-safe (no global
- * random generator). */
+ * runs ICP-SLAM. A run that loses track from the tour's start (a keyframe on fewer than a tenth
+ * of its scans) is driven again from the first waypoint where half the laser's rays return;
+ * std::runtime_error if that loses track too. Deterministic for (world, tour, noise_level,
+ * seed); thread-safe (no global random generator). */
 SlamRun simulateIcpSlam(const mrpt::maps::COccupancyGridMap2D& world,
                         const std::vector<Eigen::Vector2d>& tour, int noise_level,
                         std::uint32_t seed);
