@@ -218,8 +218,9 @@ TEST(QualityEvaluator, OneWrongPairDoesNotTurnAPart)
 // not. Nine rooms (boxes 2 m wide, 3 m apart), each vertex in its room's middle; the map is the
 // same turned by 30 degrees and shifted. Known answers: (a) one map vertex slid 0.3 m in its
 // room, walls exact: error 0 at the walls, not at the vertices; (b) one room, walls and vertex,
-// 0.2 m off: the walls give the vertices' own figure; (c) a wrong pair (the map vertex in the
-// next room) is not made right by walls: it keeps its vertex error, clipped at
+// 0.2 m off, or 0.6 m, or a corridor's 0.3 m along it: the walls give the vertices' own figure,
+// never 0; (c) a wrong pair (the map
+// vertex in the next room) is not made right by walls: it keeps its vertex error, clipped at
 // outlier_distance_m.
 TEST(QualityEvaluator, APairsErrorIsMeasuredAtItsWalls)
 {
@@ -233,31 +234,37 @@ TEST(QualityEvaluator, APairsErrorIsMeasuredAtItsWalls)
     }
     const std::size_t n = at.size();
     const Transform2D turn{4.0, -3.0, 30.0};  // ground truth -> map
-    auto addBox =
-        [](const Transform2D& T, const Eigen::Vector2d& c, std::vector<Eigen::Vector2f>& out)
+    // A room's walls: a box, or (corridor) only its two walls along x.
+    auto addBox = [](const Transform2D& T, const Eigen::Vector2d& c, bool corridor,
+                     std::vector<Eigen::Vector2f>& out)
     {
         for (int k = -20; k <= 20; ++k)
         {
             const double u = 0.05 * k;
-            for (const Eigen::Vector2d& q : {Eigen::Vector2d(u, -1.0), Eigen::Vector2d(u, 1.0),
-                                             Eigen::Vector2d(-1.0, u), Eigen::Vector2d(1.0, u)})
+            for (const Eigen::Vector2d& q : {Eigen::Vector2d(u, -1.0), Eigen::Vector2d(u, 1.0)})
+                out.push_back(T.apply(c + q).cast<float>());
+            if (corridor) continue;
+            for (const Eigen::Vector2d& q : {Eigen::Vector2d(-1.0, u), Eigen::Vector2d(1.0, u)})
                 out.push_back(T.apply(c + q).cast<float>());
         }
     };
     // room_offset: where each room (walls and vertex) lies off in the map, in the ground
-    // truth's frame; vertex_slide: how far each map vertex slid from its room's middle.
+    // truth's frame; vertex_slide: how far each map vertex slid from its room's middle;
+    // corridor: the room with only two walls (none: -1).
     auto graphs = [&](const std::vector<Eigen::Vector2d>& room_offset,
-                      const std::vector<Eigen::Vector2d>& vertex_slide)
+                      const std::vector<Eigen::Vector2d>& vertex_slide, int corridor = -1)
     {
         std::vector<Eigen::Vector2d> moved;
         for (std::size_t i = 0; i < n; ++i)
             moved.push_back(turn.apply(at[i] + room_offset[i] + vertex_slide[i]));
         TopologyGraph g = handGraph(at, edges), m = handGraph(moved, edges);
         g.map.resolution_m = m.map.resolution_m = 0.05;
+        for (auto* graph : {&g, &m})
+            for (auto& v : graph->vertices) v.clearance_m = 1.0;  // a 2 m room's middle
         for (std::size_t i = 0; i < n; ++i)
         {
-            addBox(Transform2D{}, at[i], g.wall_points_m);
-            addBox(turn, at[i] + room_offset[i], m.wall_points_m);
+            addBox(Transform2D{}, at[i], int(i) == corridor, g.wall_points_m);
+            addBox(turn, at[i] + room_offset[i], int(i) == corridor, m.wall_points_m);
         }
         return std::make_pair(g, m);
     };
@@ -266,6 +273,7 @@ TEST(QualityEvaluator, APairsErrorIsMeasuredAtItsWalls)
     match.isomorphism = int(n);
     match.isomorphism_sizes = {n};
     QualityParameters walls, vertices;
+    walls.pair_wall_margin_m = 0.5;  // a room's own walls, not the next room's (2 m away)
     vertices.pair_wall_margin_m = 0.0;
     walls.vertex_slack_share = vertices.vertex_slack_share = 0.0;
     const std::vector<Eigen::Vector2d> none(n, Eigen::Vector2d::Zero());
@@ -288,11 +296,42 @@ TEST(QualityEvaluator, APairsErrorIsMeasuredAtItsWalls)
     const auto [gb, mb] = graphs(off, none);
     const QualityReport b_walls = evaluateMatch(gb, mb, match, walls),
                         b_vertices = evaluateMatch(gb, mb, match, vertices);
+    EXPECT_EQ(b_walls.relative_accuracy.by_walls, n);
     EXPECT_GT(b_vertices.relative_accuracy.rmse_m, 0.05);
     EXPECT_NEAR(b_walls.relative_accuracy.rmse_m, b_vertices.relative_accuracy.rmse_m, 0.01);
 
-    // (c) The map vertex of pair 4 sits in room 5, 3 m off: its walls put the ground-truth
-    // vertex 3 m from it, farther than its clearance, so it keeps its vertex error (clipped).
+    // (b') Room 8 0.6 m off, farther than ICP's first matching distance (0.45 m): the walls
+    // still give the vertices' figure, never an error of 0 from an ICP that found nothing.
+    auto far = none;
+    far[8] = {0.6, 0.0};
+    const auto [gf, mf] = graphs(far, none);
+    const QualityReport f_walls = evaluateMatch(gf, mf, match, walls),
+                        f_vertices = evaluateMatch(gf, mf, match, vertices);
+    EXPECT_GT(f_vertices.relative_accuracy.rmse_m, 0.15);
+    EXPECT_NEAR(f_walls.relative_accuracy.rmse_m, f_vertices.relative_accuracy.rmse_m, 0.01);
+
+    // (b'') Room 8 is a stretch of corridor, 0.3 m off along it: its walls do not fix a place
+    // along it (pair_wall_max_pinning), so the pair keeps its vertex's figure, not 0.
+    auto along = none;
+    along[8] = {0.3, 0.0};
+    const auto [gc8, mc8] = graphs(along, none, 8);
+    const QualityReport c8_walls = evaluateMatch(gc8, mc8, match, walls),
+                        c8_vertices = evaluateMatch(gc8, mc8, match, vertices);
+    EXPECT_EQ(c8_walls.relative_accuracy.by_walls, n - 1);
+    EXPECT_GT(c8_vertices.relative_accuracy.rmse_m, 0.08);
+    EXPECT_NEAR(c8_walls.relative_accuracy.rmse_m, c8_vertices.relative_accuracy.rmse_m, 0.01);
+
+    // Graphs without walls: the vertices, as with pair_wall_margin_m = 0.
+    TopologyGraph bare_g = gb, bare_m = mb;
+    bare_g.wall_points_m.clear();
+    bare_m.wall_points_m.clear();
+    const QualityReport bare = evaluateMatch(bare_g, bare_m, match, walls);
+    EXPECT_EQ(bare.relative_accuracy.by_walls, 0u);
+    EXPECT_DOUBLE_EQ(bare.relative_accuracy.rmse_m, b_vertices.relative_accuracy.rmse_m);
+
+    // (c) The map vertex of pair 4 sits in room 5, 3 m off (a wrong pair): the walls around
+    // it do not agree with those around the ground-truth vertex under any alignment ICP finds
+    // within reach, so it keeps its vertex error (clipped).
     auto wrong = none;
     wrong[4] = at[5] - at[4] + Eigen::Vector2d(0.0, 0.4);
     const auto [gc, mc] = graphs(none, wrong);

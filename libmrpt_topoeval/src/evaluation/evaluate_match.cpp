@@ -231,8 +231,10 @@ private:
 // walls around the ground-truth vertex and those around its partner are aligned by ICP from the
 // relative alignment `t`; the map point that alignment puts on the ground-truth vertex stands in
 // for the map vertex in relative accuracy and local consistency, with no slack: a vertex slides
-// along the medial axis of its room between two maps, its walls stay. Kept only within the
-// larger clearance of the two vertices (farther, ICP was caught by other walls: the vertex
+// along the medial axis of its room between two maps, its walls stay. Kept only when the walls
+// agree under that alignment and pin it (an ICP that found nothing to align would leave the
+// error where it started, and walls along a corridor do not fix a place along it), and within
+// the larger clearance of the two vertices (farther, ICP was caught by other walls: the vertex
 // cannot have slid that far from its place). `places` and `slack` come in as the vertices'.
 void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& m,
                   const Transform2D& t, const QualityParameters& p, Walls& walls,
@@ -242,7 +244,8 @@ void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const Graph
     by_walls = 0;
     if (!(p.pair_wall_margin_m > 0.0) || !walls.ok()) return;
     const internal::WallIndex &gt_walls = walls.gt(), &map_walls = walls.map();
-    mrpt::slam::CICP icp(wallIcpOptions(gt, map, p));
+    const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
+    const double tolerance = std::max(p.pair_wall_tolerance_m, 1.5 * res);
     auto cloud = [&](const TopologyGraph& g, const internal::WallIndex& index, int v)
     {
         mrpt::maps::CSimplePointsMap c;
@@ -257,6 +260,14 @@ void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const Graph
         const mrpt::maps::CSimplePointsMap walls_gt = cloud(gt, gt_walls, m.pairs[i].ground_truth),
                                            walls_map = cloud(map, map_walls, m.pairs[i].map);
         if (walls_gt.size() < kMinWallPoints || walls_map.size() < kMinWallPoints) continue;
+        // ICP reaches at least as far as the pair's own error (within the outlier distance):
+        // a room off by more than the default matching distance is found, not missed.
+        mrpt::slam::CICP::TConfigParams o = wallIcpOptions(gt, map, p);
+        const double own_error = (a.position_m - t.apply(b.position_m)).norm();
+        o.thresholdDist = std::max(o.thresholdDist, p.outlier_distance_m > 0.0
+                                                        ? std::min(own_error, p.outlier_distance_m)
+                                                        : own_error);
+        mrpt::slam::CICP icp(o);
         mrpt::slam::CICP::TReturnInfo info;
         const auto pose =
             icp.Align(&walls_gt, &walls_map,
@@ -267,6 +278,13 @@ void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const Graph
         const double c = std::cos(pose.phi()), sn = std::sin(pose.phi());
         const Eigen::Vector2d q(c * d.x() + sn * d.y(), -sn * d.x() + c * d.y());
         if ((q - b.position_m).norm() > std::max(a.clearance_m, b.clearance_m)) continue;
+        const Transform2D walls_fit{pose.x(), pose.y(), pose.phi() * 180.0 / M_PI};
+        const internal::WallAgreement agreement = internal::wallAgreement(
+            gt, map, gt_walls, map_walls, {{m.pairs[i].ground_truth, m.pairs[i].map}}, walls_fit,
+            p.pair_wall_margin_m, tolerance, p.pair_wall_min_agreement);
+        if (agreement.share < p.pair_wall_min_agreement ||
+            agreement.pinning > p.pair_wall_max_pinning)
+            continue;
         places[i] = q;
         slack[i] = 0.0;
         ++by_walls;

@@ -60,7 +60,8 @@ std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex
 WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
                             const WallIndex& gt_walls, const WallIndex& map_walls,
                             const std::vector<std::pair<int, int>>& pairs,
-                            const Transform2D& gt_T_map, double margin_m, double tolerance_m)
+                            const Transform2D& gt_T_map, double margin_m, double tolerance_m,
+                            double pinning_from_share)
 {
     WallAgreement out;
     std::vector<int> gv, mv;
@@ -89,7 +90,7 @@ WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
                         double(hit_map) / double(from_map.size()));
     };
     out.share = shareAt(Eigen::Vector2d::Zero());
-    if (!(out.share > 0.0)) return out;
+    if (!(out.share > 0.0) || out.share < pinning_from_share) return out;
     double moved = 0.0;
     for (int k = 0; k < 8; ++k)
     {

@@ -50,10 +50,13 @@ std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex
                                          std::size_t max_points);
 
 /** The agreement of the walls around `pairs` (ground-truth vertex, map vertex) under
- * `gt_T_map` (map to ground truth). */
+ * `gt_T_map` (map to ground truth). The pinning is measured only when the share is at least
+ * `pinning_from_share` (else left at 1: a caller that refuses such a share need not pay for
+ * it). */
 WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
                             const WallIndex& gt_walls, const WallIndex& map_walls,
                             const std::vector<std::pair<int, int>>& pairs,
-                            const Transform2D& gt_T_map, double margin_m, double tolerance_m);
+                            const Transform2D& gt_T_map, double margin_m, double tolerance_m,
+                            double pinning_from_share = 0.0);
 
 }  // namespace mrpt_topoeval::internal

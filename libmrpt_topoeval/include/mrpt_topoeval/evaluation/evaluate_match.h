@@ -49,13 +49,28 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     double brokenness_wall_margin_m = 1.0;
     /** Each pair's error in relative accuracy and local consistency is measured at its walls:
      * the walls within the ground-truth vertex's clearance plus this margin and those within
-     * the map vertex's are aligned by ICP (MRPT's CICP, from the relative alignment), and the
-     * map point they put at the ground-truth vertex stands in for the map vertex. A vertex of
-     * an open room slides along the medial axis between two maps by a fraction of the room's
-     * half width; the walls do not. Kept only when that point lies within the larger clearance
-     * of the map vertex (ICP caught by other walls otherwise); then vertex_slack_share does not
-     * apply. 0 = the vertices' positions [m]. */
+     * the map vertex's are aligned by ICP (MRPT's CICP, from the relative alignment; its first
+     * matching distance the larger of the pair's own error and the root of
+     * brokenness_max_squared_error_m2), and the map point they put at the ground-truth vertex
+     * stands in for the map vertex. A vertex of an open room slides along the medial axis
+     * between two maps by a fraction of the room's half width; the walls do not. Kept only
+     * when the walls agree and pin that alignment (pair_wall_min_agreement,
+     * pair_wall_max_pinning) and the point lies within the larger clearance of the two
+     * vertices; then vertex_slack_share does not apply. 0 = the vertices' positions [m]. */
     double pair_wall_margin_m = 1.0;
+    /** A pair's walls' place is kept when at least this share of the walls around it, from
+     * both maps, lie within pair_wall_tolerance_m of the other map's walls under the walls'
+     * alignment: an ICP that found nothing to align leaves the pair's error where it started,
+     * and would count a room off by more than its matching distance as exact. As the matcher's
+     * min_part_wall_agreement [0..1]. */
+    double pair_wall_min_agreement = 0.7;
+    /** ... and when that alignment moved by 2 x pair_wall_tolerance_m keeps at most this share
+     * of the agreement: walls along a corridor do not fix a place along it. As the matcher's
+     * max_wall_pinning [ratio]. */
+    double pair_wall_max_pinning = 0.9;
+    /** A wall point agrees with one this near (at least 1.5 cells). As the matcher's
+     * wall_tolerance_m [m]. */
+    double pair_wall_tolerance_m = 0.15;
     /** A pair's position error up to this share of its vertices' clearance (the larger of the
      * two) is vertex jitter, not map error: a vertex in a room sits on the medial axis, which
      * slides with furniture, noise and resolution by a fraction of the room's half width.
