@@ -108,6 +108,9 @@ TOPOEVAL_PARAMETER_TABLE(
     real(TOPOEVAL_KEY(position_tolerance_m), "m",
          "consistent growing: predicted partner within this", atLeast(0)),
     real(TOPOEVAL_KEY(min_consistent_growing_similarity), "0..1",
-         "consistent growing: pairs at least this similar", atLeast(0).atMost(1)))
+         "consistent growing: pairs at least this similar", atLeast(0).atMost(1)),
+    real(TOPOEVAL_KEY(min_grown_wall_agreement), "0..1",
+         "consistent growing: ... whose walls agree under the fit at least this much (0: off)",
+         atLeast(0).atMost(1)))
 
 }  // namespace mrpt_topoeval

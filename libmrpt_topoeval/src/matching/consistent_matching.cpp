@@ -738,6 +738,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             {
                 double score;
                 int gt, map, group;
+                Transform2D fit;  //!< the group's local fit that placed it
             };
             std::vector<Proposal> proposals;
             for (int a = 0; a < n_gt; ++a)
@@ -802,7 +803,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                                            p.distance_tolerance_ratio * near.front().first;
                         const double err = (T.apply(pm(b)) - pg(a)).norm();
                         if (err > tol) continue;
-                        proposals.push_back({(1.0 - err / tol) + S(a, b), a, b, int(g)});
+                        proposals.push_back({(1.0 - err / tol) + S(a, b), a, b, int(g), T});
                     }
                 }
             }
@@ -810,11 +811,26 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             std::sort(proposals.begin(), proposals.end(),
                       [](const Proposal& x, const Proposal& y)
                       { return std::tie(y.score, x.gt, x.map) < std::tie(x.score, y.gt, y.map); });
-            // Take only the best proposal per vertex in this round; the fits then change.
+            // Take only the best proposal per vertex in this round; the fits then change. A
+            // proposal whose walls do not agree under its fit is not taken
+            // (min_grown_wall_agreement; maps without walls are not asked).
+            const bool check_walls = p.min_grown_wall_agreement > 0.0 &&
+                                     !gt.wall_points_m.empty() && !map.wall_points_m.empty();
             int taken = 0;
             for (const Proposal& pr : proposals)
             {
                 if (ctx.gt_to_map[pr.gt] >= 0 || ctx.map_to_gt[pr.map] >= 0) continue;
+                if (check_walls)
+                {
+                    if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
+                    if (!map_walls) map_walls.emplace(map.wall_points_m);
+                    // The share only (its pinning is not asked: pinning_from_share above 1).
+                    // Walls on one side only (a vertex bounded by unexplored space) say nothing.
+                    const WallAgreement w =
+                        wallAgreement(gt, map, *gt_walls, *map_walls, {{pr.gt, pr.map}}, pr.fit,
+                                      p.wall_margin_m, wall_tolerance, 2.0);
+                    if (w.walls_on_both && w.share < p.min_grown_wall_agreement) continue;
+                }
                 ctx.gt_to_map[pr.gt] = pr.map;
                 ctx.map_to_gt[pr.map] = pr.gt;
                 group_of_gt[pr.gt] = pr.group;

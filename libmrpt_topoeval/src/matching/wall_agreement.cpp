@@ -71,6 +71,7 @@ WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
     const std::vector<Eigen::Vector2d> from_map =
         wallsAround(map, map_walls, mv, margin_m, kMaxWallPoints);
     if (from_gt.empty() || from_map.empty()) return out;
+    out.walls_on_both = true;
     // The share under the fit moved by `shift` (in the ground truth's frame).
     const double yaw = mrpt::DEG2RAD(gt_T_map.yaw_deg);
     const double c = std::cos(yaw), s = std::sin(yaw);

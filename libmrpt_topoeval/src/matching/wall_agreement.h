@@ -41,6 +41,9 @@ struct WallAgreement
      * directions, over `share`: near 1 when the walls do not pin the fit (a straight corridor
      * fits itself anywhere along it), about 0.5-0.9 when they do. */
     double pinning = 1.0;
+    /** Whether both maps have wall points around the group (else share is 0 for want of walls,
+     * not for walls that disagree). */
+    bool walls_on_both = false;
 };
 
 /** The wall points within each of `vertices`' clearance + `margin_m`, without repeats, sorted
