@@ -691,12 +691,12 @@ TEST(ConsistentMatching, WallsOfASmallPartAgreeAndPinItsFit)
         {-2, -2, 2, -2}, {2, -2, 2, 2}, {2, 2, -2, 2}, {-2, 2, -2, -2}};
     const std::vector<std::array<double, 4>> corridor{{-20, -1, 20, -1}, {-20, 1, 20, 1}};
     auto check = [&](const std::vector<std::array<double, 4>>& walls, double clearance,
-                     const Transform2D& fit)
+                     const Transform2D& fit, double pinning_from_share = 0.0)
     {
         const TopologyGraph gt = wallsAndOneVertex(walls, clearance, T);
         const TopologyGraph map = wallsAndOneVertex(walls, clearance, none);
         const WallIndex gi(gt.wall_points_m), mi(map.wall_points_m);
-        return internal::wallAgreement(gt, map, gi, mi, pair, fit, 1.0, 0.15);
+        return internal::wallAgreement(gt, map, gi, mi, pair, fit, 1.0, 0.15, pinning_from_share);
     };
     // The right fit puts every wall on a wall; moved by 0.3 m along an axis it keeps only
     // the walls parallel to the move (half), diagonally none: the room's walls pin the fit.
@@ -704,17 +704,27 @@ TEST(ConsistentMatching, WallsOfASmallPartAgreeAndPinItsFit)
     EXPECT_GT(room_right.share, 0.99);
     EXPECT_LT(room_right.pinning, 0.6);
     EXPECT_GT(room_right.pinning, 0.3);
-    // A fit 1 m off agrees nowhere.
+    EXPECT_TRUE(room_right.walls_on_both);
+    // A share that a caller refuses is not worth its pinning (pinning_from_share): left at 1.
+    const auto room_unpinned = check(room, 2.0, T, 2.0);
+    EXPECT_EQ(room_unpinned.share, room_right.share);
+    EXPECT_EQ(room_unpinned.pinning, 1.0);
+    // A fit 1 m off agrees nowhere, though both maps have walls there: a pair grown under such
+    // a fit is refused (min_grown_wall_agreement).
     const Transform2D off{T.x_m + 1.0, T.y_m + 1.0, T.yaw_deg};
-    EXPECT_LT(check(room, 2.0, off).share, 0.1);
+    const auto room_off = check(room, 2.0, off);
+    EXPECT_TRUE(room_off.walls_on_both);
+    EXPECT_LT(room_off.share, GraphMatcherParameters{}.min_grown_wall_agreement);
     // A corridor's walls agree with the right fit and with the fit moved along the corridor:
     // they do not pin it, and a group that only they confirm is refused (max_wall_pinning).
     const auto corridor_right = check(corridor, 1.0, T);
     EXPECT_GT(corridor_right.share, 0.99);
     EXPECT_GT(corridor_right.pinning, 0.95);
     EXPECT_GT(corridor_right.pinning, GraphMatcherParameters{}.max_wall_pinning);
-    // No walls: nothing agrees.
+    // No walls: nothing agrees, for want of walls (a grown pair there is not judged by them).
     const TopologyGraph bare = wallsAndOneVertex({}, 1.0, none);
     const WallIndex empty(bare.wall_points_m);
-    EXPECT_EQ(internal::wallAgreement(bare, bare, empty, empty, pair, none, 1.0, 0.15).share, 0.0);
+    const auto no_walls = internal::wallAgreement(bare, bare, empty, empty, pair, none, 1.0, 0.15);
+    EXPECT_EQ(no_walls.share, 0.0);
+    EXPECT_FALSE(no_walls.walls_on_both);
 }
