@@ -13,10 +13,10 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <queue>
 #include <sstream>
 
+#include "evaluation/wall_places.h"
 #include "geometry/horn.h"
 #include "graph/MatchView.h"
 #include "matching/wall_agreement.h"
@@ -123,27 +123,6 @@ double f3Quantile95(int dof)
     return q;
 }
 
-// The ICP of walls (a brokenness group's turn, a pair's place): MRPT's CICP, classic, its first
-// matching distance the error a part's fit allows (the root of brokenness_max_squared_error_m2),
-// halved down to two cells.
-constexpr int kWallIcpIterations = 60;
-constexpr std::size_t kMinWallPoints = 20;  // fewer: no refinement (a bare plan's few walls)
-mrpt::slam::CICP::TConfigParams wallIcpOptions(const TopologyGraph& gt, const TopologyGraph& map,
-                                               const QualityParameters& p)
-{
-    const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
-    mrpt::slam::CICP::TConfigParams o;
-    o.ICP_algorithm = mrpt::slam::icpClassic;
-    o.maxIterations = kWallIcpIterations;
-    o.thresholdDist = std::max(std::sqrt(p.brokenness_max_squared_error_m2), 3.0 * res);
-    o.thresholdAng = 0.0;
-    o.ALFA = 0.5;
-    o.smallestThresholdDist = 2.0 * res;
-    o.skip_cov_calculation = true;
-    o.skip_quality_calculation = true;
-    return o;
-}
-
 // Ours (brokenness_wall_margin_m): a group's transform from the walls around its vertices. The
 // vertices' fit decides the group; its turn is then as good as a few vertices that slide along
 // the medial axis (0.1-0.2 degrees typically, 2-5 degrees on a small part near its cut), while
@@ -167,8 +146,9 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     };
     const mrpt::maps::CSimplePointsMap walls_gt = around(gt, gt_walls, true),
                                        walls_map = around(map, map_walls, false);
-    if (walls_gt.size() < kMinWallPoints || walls_map.size() < kMinWallPoints) return fit;
-    mrpt::slam::CICP icp(wallIcpOptions(gt, map, p));
+    if (walls_gt.size() < internal::kMinWallPoints || walls_map.size() < internal::kMinWallPoints)
+        return fit;
+    mrpt::slam::CICP icp(internal::wallIcpOptions(gt, map, p));
     mrpt::slam::CICP::TReturnInfo info;
     // The ground truth's walls are the reference; the map's walls' pose in its frame is the
     // map -> ground truth transform.
@@ -201,102 +181,12 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     return (sse_walls - sse_fit) / 3.0 <= f3Quantile95(dof) * sse_fit / double(dof) ? t : fit;
 }
 
-// Both graphs' wall points in KD-trees, built on first use and shared by the steps that align
-// walls (pair places, brokenness groups' turns). `ok()` is false when either graph has none.
-class Walls
-{
-public:
-    Walls(const TopologyGraph& gt, const TopologyGraph& map) : m_gt_graph(gt), m_map_graph(map) {}
-    bool ok() const
-    {
-        return !m_gt_graph.wall_points_m.empty() && !m_map_graph.wall_points_m.empty();
-    }
-    const internal::WallIndex& gt()
-    {
-        if (!m_gt) m_gt.emplace(m_gt_graph.wall_points_m);
-        return *m_gt;
-    }
-    const internal::WallIndex& map()
-    {
-        if (!m_map) m_map.emplace(m_map_graph.wall_points_m);
-        return *m_map;
-    }
-
-private:
-    const TopologyGraph &m_gt_graph, &m_map_graph;
-    std::optional<internal::WallIndex> m_gt, m_map;
-};
-
-// Ours (pair_wall_margin_m): where the map's walls put each pair's ground-truth vertex. The
-// walls around the ground-truth vertex and those around its partner are aligned by ICP from the
-// relative alignment `t`; the map point that alignment puts on the ground-truth vertex stands in
-// for the map vertex in relative accuracy and local consistency, with no slack: a vertex slides
-// along the medial axis of its room between two maps, its walls stay. Kept only when the walls
-// agree under that alignment and pin it (an ICP that found nothing to align would leave the
-// error where it started, and walls along a corridor do not fix a place along it), and within
-// the larger clearance of the two vertices (farther, ICP was caught by other walls: the vertex
-// cannot have slid that far from its place). `places` and `slack` come in as the vertices'.
-void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& m,
-                  const Transform2D& t, const QualityParameters& p, Walls& walls,
-                  std::vector<Eigen::Vector2d>& places, std::vector<double>& slack,
-                  std::size_t& by_walls)
-{
-    by_walls = 0;
-    if (!(p.pair_wall_margin_m > 0.0) || !walls.ok()) return;
-    const internal::WallIndex &gt_walls = walls.gt(), &map_walls = walls.map();
-    const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
-    const double tolerance = std::max(p.pair_wall_tolerance_m, 1.5 * res);
-    auto cloud = [&](const TopologyGraph& g, const internal::WallIndex& index, int v)
-    {
-        mrpt::maps::CSimplePointsMap c;
-        for (const auto& q : internal::wallsAround(g, index, {v}, p.pair_wall_margin_m, 0))
-            c.insertPoint(float(q.x()), float(q.y()), 0.0f);
-        return c;
-    };
-    for (std::size_t i = 0; i < m.pairs.size(); ++i)
-    {
-        const auto& a = gt.vertices[static_cast<std::size_t>(m.pairs[i].ground_truth)];
-        const auto& b = map.vertices[static_cast<std::size_t>(m.pairs[i].map)];
-        const mrpt::maps::CSimplePointsMap walls_gt = cloud(gt, gt_walls, m.pairs[i].ground_truth),
-                                           walls_map = cloud(map, map_walls, m.pairs[i].map);
-        if (walls_gt.size() < kMinWallPoints || walls_map.size() < kMinWallPoints) continue;
-        // ICP reaches at least as far as the pair's own error (within the outlier distance):
-        // a room off by more than the default matching distance is found, not missed.
-        mrpt::slam::CICP::TConfigParams o = wallIcpOptions(gt, map, p);
-        const double own_error = (a.position_m - t.apply(b.position_m)).norm();
-        o.thresholdDist = std::max(o.thresholdDist, p.outlier_distance_m > 0.0
-                                                        ? std::min(own_error, p.outlier_distance_m)
-                                                        : own_error);
-        mrpt::slam::CICP icp(o);
-        mrpt::slam::CICP::TReturnInfo info;
-        const auto pose =
-            icp.Align(&walls_gt, &walls_map,
-                      mrpt::poses::CPose2D(t.x_m, t.y_m, t.yaw_deg * M_PI / 180.0), info)
-                ->getMeanVal();
-        // The map point this alignment puts on the ground-truth vertex: pose^-1 (p_a).
-        const Eigen::Vector2d d = a.position_m - Eigen::Vector2d(pose.x(), pose.y());
-        const double c = std::cos(pose.phi()), sn = std::sin(pose.phi());
-        const Eigen::Vector2d q(c * d.x() + sn * d.y(), -sn * d.x() + c * d.y());
-        if ((q - b.position_m).norm() > std::max(a.clearance_m, b.clearance_m)) continue;
-        const Transform2D walls_fit{pose.x(), pose.y(), pose.phi() * 180.0 / M_PI};
-        const internal::WallAgreement agreement = internal::wallAgreement(
-            gt, map, gt_walls, map_walls, {{m.pairs[i].ground_truth, m.pairs[i].map}}, walls_fit,
-            p.pair_wall_margin_m, tolerance, p.pair_wall_min_agreement);
-        if (agreement.share < p.pair_wall_min_agreement ||
-            agreement.pinning > p.pair_wall_max_pinning)
-            continue;
-        places[i] = q;
-        slack[i] = 0.0;
-        ++by_walls;
-    }
-}
-
 // Paper IV, brokenness: grow groups of connected matched vertices by wavefront while their
 // Horn alignment's mean squared error stays under the threshold; keep groups of at least the
 // minimum size; the degree is the number of groups minus one.
 Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                       const internal::MatchView& view, const GraphMatch& m,
-                      const QualityParameters& p, Walls& walls)
+                      const QualityParameters& p, internal::Walls& walls)
 {
     Brokenness b;
     if (m.pairs.empty()) return b;
@@ -648,9 +538,9 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     std::vector<Eigen::Vector2d> places = pm;
     std::vector<double> slack;
     for (const auto& pr : match.pairs) slack.push_back(pairSlack(ground_truth, map, pr, p));
-    Walls walls(ground_truth, map);
-    placeByWalls(ground_truth, map, match, t, p, walls, places, slack,
-                 r.relative_accuracy.by_walls);
+    internal::Walls walls(ground_truth, map);
+    internal::placeByWalls(ground_truth, map, match, t, p, walls, places, slack,
+                           r.relative_accuracy.by_walls);
     if (r.relative_accuracy.by_walls > 0)
     {
         std::vector<Eigen::Vector2d> ig, im;
