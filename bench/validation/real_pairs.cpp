@@ -931,7 +931,13 @@ void intelPairs(const fs::path& data, std::vector<RealPair>& out, std::vector<st
     const std::size_t n = kt.est.size();
     KeyframeMappings km = keyframeMapping(std::move(kt.est), std::move(kt.truth), kt.scans, p.map);
     p.truth.mapping = std::move(km.point);
-    p.truth.vertex_mapping = std::move(km.vertex);
+    p.truth.vertex_places =
+        [vertex = std::move(km.vertex)](const Eigen::Vector2d& q, double clearance_m)
+    {
+        std::vector<std::pair<int, Eigen::Vector2d>> places;
+        if (const auto at = vertex(q, clearance_m)) places.emplace_back(-1, *at);
+        return places;
+    };
     p.truth.source = "keyframe poses: " + std::to_string(n) +
                      " SLAM keyframes (per point, the ones whose scans drew the obstacles nearest "
                      "to it); true pose from the corrected log for " +

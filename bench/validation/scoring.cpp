@@ -104,14 +104,13 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
         for (const auto& v : map.vertices)
         {
             auto& own = places[static_cast<std::size_t>(v.id)];
-            if (truth.vertex_parts)
+            if (truth.vertex_places)
             {
-                own = truth.vertex_parts(v.position_m, v.clearance_m);
+                own = truth.vertex_places(v.position_m, v.clearance_m);
                 continue;
             }
-            const auto q = truth.vertex_mapping ? truth.vertex_mapping(v.position_m, v.clearance_m)
-                                                : truth.mapping(v.position_m);
-            if (q) own.emplace_back(truth.part_of ? truth.part_of(v.position_m) : -1, *q);
+            if (const auto q = truth.mapping(v.position_m))
+                own.emplace_back(truth.part_of ? truth.part_of(v.position_m) : -1, *q);
         }
     // The part by which map vertex m stands for ground-truth vertex g (kNotTrue: it does not;
     // -1: a truth without parts).

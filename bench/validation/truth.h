@@ -36,24 +36,22 @@ struct Truth
     /** The other way, ground truth -> map, where the generator knows it (identity and warped
      * variants); used by the free-space check. Unset: not known. */
     TruthMapping forward;
-    /** A topology vertex's placement when it needs more than its position (the keyframe truth
-     * asks which scans drew the walls at the vertex's clearance); unset: `mapping`. */
-    std::function<std::optional<Eigen::Vector2d>(const Eigen::Vector2d& p_map, double clearance_m)>
-        vertex_mapping;
     /** Human-readable origin of the truth ("by construction", "known transform (data README)",
      * "same frame", "keyframe poses", "12 hand-labelled keypoints, fit rmse 0.08 m"). */
     std::string source;
     /** Broken maps: the rigid part (index into part_yaw_deg) a map point belongs to, -1 for
      * none; unset for maps that are not broken by construction. */
     std::function<int(const Eigen::Vector2d& p_map)> part_of;
-    /** Broken maps: where a topology vertex belongs, by the walls that make it (its Voronoi
-     * sites, those within its clearance): one place per part that put at least a quarter of
-     * those walls there, the part with the most first, then part_of(p_map) if not among them.
-     * A vertex on a seam is made by two parts, and its place is then true by either. Unset:
-     * part_of(p_map) and mapping. */
+    /** A topology vertex's places in the ground truth, (part or -1, position), the most likely
+     * first, when its position alone does not say (by the walls that make it, its Voronoi
+     * sites within its clearance): broken maps give one place per part that put at least a
+     * quarter of those walls there, then part_of(p_map) if not among them (a vertex on a seam
+     * is made by two parts, and its place is then true by either); the keyframe truth asks
+     * which scans drew those walls (one place, part -1; none when no keyframe places it).
+     * Unset: part_of(p_map) (or -1) and mapping(p_map). */
     std::function<std::vector<std::pair<int, Eigen::Vector2d>>(const Eigen::Vector2d& p_map,
                                                                double clearance_m)>
-        vertex_parts;
+        vertex_places;
     /** Rotation of each part, map -> ground truth [deg]; part 0 is the unbroken rest. */
     std::vector<double> part_yaw_deg;
     /** Breaks injected (brokenness the scorer expects); -1 when not known (real maps, SLAM). */

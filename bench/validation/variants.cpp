@@ -236,7 +236,7 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     if (parts.size() > 1)
     {
         auto shared_walls = std::make_shared<const std::vector<std::int8_t>>(std::move(wall_part));
-        v.truth.vertex_parts =
+        v.truth.vertex_places =
             [part_of, shared_inv, shared_walls, idx](const Eigen::Vector2d& q, double clearance_m)
         {
             const double reach = std::max(0.0, clearance_m) + 1.5 * idx.res;
