@@ -154,7 +154,8 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     // does): in overlaps the truth of a cell is the part that put its wall there.
     std::vector<std::int8_t> cell_part(static_cast<std::size_t>(dsx) * dsy, -1);
     // The part whose wall a cell is (-1: no wall): a topology vertex's walls name its part.
-    std::vector<std::int8_t> wall_part(cell_part.size(), -1);
+    // Only a warp of several parts asks (vertex_places below).
+    std::vector<std::int8_t> wall_part(parts.size() > 1 ? cell_part.size() : 0, -1);
     for (int cy = 0; cy < dsy; ++cy)
         for (int cx = 0; cx < dsx; ++cx)
         {
@@ -197,7 +198,9 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
                 static_cast<std::int8_t>(occ_part >= 0    ? occ_part
                                          : free_part >= 0 ? free_part
                                                           : seen_part);
-            wall_part[static_cast<std::size_t>(cy) * dsx + cx] = static_cast<std::int8_t>(occ_part);
+            if (!wall_part.empty())
+                wall_part[static_cast<std::size_t>(cy) * dsx + cx] =
+                    static_cast<std::int8_t>(occ_part);
             if (occ_part >= 0)
                 v.map.setCell(cx, cy, 0.0f);
             else if (free_part >= 0)
