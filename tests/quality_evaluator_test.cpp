@@ -290,44 +290,49 @@ TEST(QualityEvaluator, APairsErrorIsMeasuredAtItsWalls)
     EXPECT_GT(a_vertices.relative_accuracy.rmse_m, 0.08);
     for (const auto& c : a_walls.local_consistency) EXPECT_LT(c.mean_error_m, 0.01) << c.name;
 
-    // (b) Room 8 (walls and vertex) 0.2 m off: the map's own error, as its vertices show it.
-    auto off = none;
-    off[8] = {0.0, 0.2};
-    const auto [gb, mb] = graphs(off, none);
-    const QualityReport b_walls = evaluateMatch(gb, mb, match, walls),
-                        b_vertices = evaluateMatch(gb, mb, match, vertices);
-    EXPECT_EQ(b_walls.relative_accuracy.by_walls, n);
-    EXPECT_GT(b_vertices.relative_accuracy.rmse_m, 0.05);
-    EXPECT_NEAR(b_walls.relative_accuracy.rmse_m, b_vertices.relative_accuracy.rmse_m, 0.01);
+    // Room 8 (walls and vertex) `offset` off, as a box or (corridor) a stretch of corridor:
+    // the graphs, and the reports at the walls and at the vertices.
+    struct RoomOff
+    {
+        TopologyGraph g, m;
+        QualityReport at_walls, at_vertices;
+    };
+    auto roomOff = [&](const Eigen::Vector2d& offset, bool corridor)
+    {
+        auto off = none;
+        off[8] = offset;
+        auto [g, m] = graphs(off, none, corridor ? 8 : -1);
+        RoomOff r{g, m, evaluateMatch(g, m, match, walls), evaluateMatch(g, m, match, vertices)};
+        return r;
+    };
+
+    // (b) Room 8 0.2 m off: the map's own error, as its vertices show it.
+    const RoomOff b = roomOff({0.0, 0.2}, false);
+    EXPECT_EQ(b.at_walls.relative_accuracy.by_walls, n);
+    EXPECT_GT(b.at_vertices.relative_accuracy.rmse_m, 0.05);
+    EXPECT_NEAR(b.at_walls.relative_accuracy.rmse_m, b.at_vertices.relative_accuracy.rmse_m, 0.01);
 
     // (b') Room 8 0.6 m off, farther than ICP's first matching distance (0.45 m): the walls
     // still give the vertices' figure, never an error of 0 from an ICP that found nothing.
-    auto far = none;
-    far[8] = {0.6, 0.0};
-    const auto [gf, mf] = graphs(far, none);
-    const QualityReport f_walls = evaluateMatch(gf, mf, match, walls),
-                        f_vertices = evaluateMatch(gf, mf, match, vertices);
-    EXPECT_GT(f_vertices.relative_accuracy.rmse_m, 0.15);
-    EXPECT_NEAR(f_walls.relative_accuracy.rmse_m, f_vertices.relative_accuracy.rmse_m, 0.01);
+    const RoomOff f = roomOff({0.6, 0.0}, false);
+    EXPECT_GT(f.at_vertices.relative_accuracy.rmse_m, 0.15);
+    EXPECT_NEAR(f.at_walls.relative_accuracy.rmse_m, f.at_vertices.relative_accuracy.rmse_m, 0.01);
 
     // (b'') Room 8 is a stretch of corridor, 0.3 m off along it: its walls do not fix a place
     // along it (pair_wall_max_pinning), so the pair keeps its vertex's figure, not 0.
-    auto along = none;
-    along[8] = {0.3, 0.0};
-    const auto [gc8, mc8] = graphs(along, none, 8);
-    const QualityReport c8_walls = evaluateMatch(gc8, mc8, match, walls),
-                        c8_vertices = evaluateMatch(gc8, mc8, match, vertices);
-    EXPECT_EQ(c8_walls.relative_accuracy.by_walls, n - 1);
-    EXPECT_GT(c8_vertices.relative_accuracy.rmse_m, 0.08);
-    EXPECT_NEAR(c8_walls.relative_accuracy.rmse_m, c8_vertices.relative_accuracy.rmse_m, 0.01);
+    const RoomOff c8 = roomOff({0.3, 0.0}, true);
+    EXPECT_EQ(c8.at_walls.relative_accuracy.by_walls, n - 1);
+    EXPECT_GT(c8.at_vertices.relative_accuracy.rmse_m, 0.08);
+    EXPECT_NEAR(c8.at_walls.relative_accuracy.rmse_m, c8.at_vertices.relative_accuracy.rmse_m,
+                0.01);
 
     // Graphs without walls: the vertices, as with pair_wall_margin_m = 0.
-    TopologyGraph bare_g = gb, bare_m = mb;
+    TopologyGraph bare_g = b.g, bare_m = b.m;
     bare_g.wall_points_m.clear();
     bare_m.wall_points_m.clear();
     const QualityReport bare = evaluateMatch(bare_g, bare_m, match, walls);
     EXPECT_EQ(bare.relative_accuracy.by_walls, 0u);
-    EXPECT_DOUBLE_EQ(bare.relative_accuracy.rmse_m, b_vertices.relative_accuracy.rmse_m);
+    EXPECT_DOUBLE_EQ(bare.relative_accuracy.rmse_m, b.at_vertices.relative_accuracy.rmse_m);
 
     // (c) The map vertex of pair 4 sits in room 5, 3 m off (a wrong pair): the walls around
     // it do not agree with those around the ground-truth vertex under any alignment ICP finds

@@ -158,9 +158,9 @@ CPose2D noisyIncrement(const CPose2D& inc, const OdometryNoise& nm, std::mt19937
     return CPose2D(c * fwd - s * lat, s * fwd + c * lat, rot);
 }
 
-/** A 360-degree scan at `pose` on `world`, with seeded Gaussian range noise. */
-mrpt::obs::CObservation2DRangeScan::Ptr simulateScan(const mrpt::maps::COccupancyGridMap2D& world,
-                                                     const CPose2D& pose, std::mt19937& rng)
+/** A 360-degree scan at `pose` on `world`, without noise. */
+mrpt::obs::CObservation2DRangeScan::Ptr noiselessScan(const mrpt::maps::COccupancyGridMap2D& world,
+                                                      const CPose2D& pose)
 {
     auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
     scan->sensorLabel = "LASER";
@@ -169,6 +169,14 @@ mrpt::obs::CObservation2DRangeScan::Ptr simulateScan(const mrpt::maps::COccupanc
     scan->rightToLeft = true;
     // noiseStd = 0 and angleNoiseStd = 0: MRPT's global random generator is not used.
     world.laserScanSimulator(*scan, pose, 0.5f, kRays, 0.0f, 1, 0.0f);
+    return scan;
+}
+
+/** A 360-degree scan at `pose` on `world`, with seeded Gaussian range noise. */
+mrpt::obs::CObservation2DRangeScan::Ptr simulateScan(const mrpt::maps::COccupancyGridMap2D& world,
+                                                     const CPose2D& pose, std::mt19937& rng)
+{
+    auto scan = noiselessScan(world, pose);
     std::normal_distribution<double> gauss(0.0, kRangeSigma_m);
     for (std::size_t i = 0; i < kRays; ++i)
     {
@@ -426,16 +434,10 @@ std::size_t firstWaypointNearWalls(const mrpt::maps::COccupancyGridMap2D& world,
 {
     for (std::size_t k = 0; k < tour.size(); ++k)
     {
-        mrpt::obs::CObservation2DRangeScan scan;
-        scan.aperture = static_cast<float>(2 * M_PI);
-        scan.maxRange = kMaxRange_m;
-        scan.rightToLeft = true;
-        // noiseStd = 0 and angleNoiseStd = 0: no random numbers are drawn.
-        world.laserScanSimulator(scan, CPose2D(tour[k].x(), tour[k].y(), 0.0), 0.5f, kRays, 0.0f, 1,
-                                 0.0f);
+        const auto scan = noiselessScan(world, CPose2D(tour[k].x(), tour[k].y(), 0.0));
         std::size_t returns = 0;
-        for (std::size_t r = 0; r < scan.getScanSize(); ++r)
-            returns += scan.getScanRangeValidity(r);
+        for (std::size_t r = 0; r < scan->getScanSize(); ++r)
+            returns += scan->getScanRangeValidity(r);
         if (static_cast<double>(returns) >= kMinStartReturns * static_cast<double>(kRays)) return k;
     }
     return 0;

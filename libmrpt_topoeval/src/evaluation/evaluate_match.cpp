@@ -1,9 +1,6 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 // Paper IV: map attributes from a match of two Topology Graphs, and the scores built on them.
 
-#include <mrpt/maps/CSimplePointsMap.h>
-#include <mrpt/poses/CPosePDF.h>
-#include <mrpt/slam/CICP.h>
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/graph/build_graph.h>
@@ -67,6 +64,27 @@ double countedError(double error, double slack, const QualityParameters& p)
 {
     const double e = std::max(0.0, error - slack);
     return p.outlier_distance_m > 0.0 ? std::min(e, p.outlier_distance_m) : e;
+}
+
+// Horn's fit of the pairs (pg[i], pts[i]) that `t` places within outlier_m of each other (all
+// of them when outlier_m is 0), and how many those are; `t` itself when fewer than 2.
+struct InlierFit
+{
+    Transform2D transform;
+    std::size_t inliers = 0;
+};
+InlierFit fitOfInliers(const std::vector<Eigen::Vector2d>& pg,
+                       const std::vector<Eigen::Vector2d>& pts, const Transform2D& t,
+                       double outlier_m)
+{
+    std::vector<Eigen::Vector2d> ig, im;
+    for (std::size_t i = 0; i < pg.size(); ++i)
+        if (!(outlier_m > 0.0) || (pg[i] - t.apply(pts[i])).norm() <= outlier_m)
+        {
+            ig.push_back(pg[i]);
+            im.push_back(pts[i]);
+        }
+    return {ig.size() >= 2 ? internal::hornAlign(ig, im) : t, ig.size()};
 }
 
 // Paper IV, local consistency: all pairs of matched ground-truth vertices, grouped by their
@@ -133,33 +151,10 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
                            const std::vector<std::pair<int, int>>& pairs, const Transform2D& fit,
                            const QualityParameters& p)
 {
-    // Every wall point within a vertex's clearance + margin (not thinned: ICP wants them all).
-    auto around = [&](const TopologyGraph& g, const internal::WallIndex& index, bool ground_truth)
-    {
-        std::vector<int> vertices;
-        for (const auto& [a, b] : pairs) vertices.push_back(ground_truth ? a : b);
-        mrpt::maps::CSimplePointsMap cloud;
-        for (const auto& q :
-             internal::wallsAround(g, index, vertices, p.brokenness_wall_margin_m, 0))
-            cloud.insertPoint(float(q.x()), float(q.y()), 0.0f);
-        return cloud;
-    };
-    const mrpt::maps::CSimplePointsMap walls_gt = around(gt, gt_walls, true),
-                                       walls_map = around(map, map_walls, false);
-    if (walls_gt.size() < internal::kMinWallPoints || walls_map.size() < internal::kMinWallPoints)
-        return fit;
-    mrpt::slam::CICP icp(internal::wallIcpOptions(gt, map, p));
-    mrpt::slam::CICP::TReturnInfo info;
-    // The ground truth's walls are the reference; the map's walls' pose in its frame is the
-    // map -> ground truth transform.
-    const auto pose =
-        icp.Align(&walls_gt, &walls_map,
-                  mrpt::poses::CPose2D(fit.x_m, fit.y_m, fit.yaw_deg * M_PI / 180.0), info)
-            ->getMeanVal();
-    Transform2D t;
-    t.x_m = pose.x();
-    t.y_m = pose.y();
-    t.yaw_deg = pose.phi() * 180.0 / M_PI;
+    const auto walls_fit = internal::alignWalls(gt, map, gt_walls, map_walls, pairs,
+                                                p.brokenness_wall_margin_m, fit, p);
+    if (!walls_fit) return fit;
+    const Transform2D& t = *walls_fit;
     // The walls' transform replaces the vertices' fit only where the vertices do not reject
     // it: inside the fit's 95 % confidence region (an F test of the rise in the vertices'
     // squared error, 3 parameters of a rigid fit against 2n - 3 degrees of freedom left), and
@@ -522,15 +517,9 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     Transform2D t = internal::hornAlign(pg, pm);
     for (int round = 0; round < 3 && p.outlier_distance_m > 0.0; ++round)
     {
-        std::vector<Eigen::Vector2d> ig, im;
-        for (std::size_t i = 0; i < pg.size(); ++i)
-            if ((pg[i] - t.apply(pm[i])).norm() <= p.outlier_distance_m)
-            {
-                ig.push_back(pg[i]);
-                im.push_back(pm[i]);
-            }
-        if (ig.size() < 3 || ig.size() == pg.size()) break;
-        t = internal::hornAlign(ig, im);
+        const InlierFit f = fitOfInliers(pg, pm, t, p.outlier_distance_m);
+        if (f.inliers < 3 || f.inliers == pg.size()) break;
+        t = f.transform;
     }
     // Each pair's map place: its vertex (with the jitter slack) or, where the walls around it
     // agree, the point they put on its ground-truth vertex (pair_wall_margin_m). The alignment
@@ -543,15 +532,8 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
                            r.relative_accuracy.by_walls);
     if (r.relative_accuracy.by_walls > 0)
     {
-        std::vector<Eigen::Vector2d> ig, im;
-        for (std::size_t i = 0; i < pg.size(); ++i)
-            if (p.outlier_distance_m <= 0.0 ||
-                (pg[i] - t.apply(places[i])).norm() <= p.outlier_distance_m)
-            {
-                ig.push_back(pg[i]);
-                im.push_back(places[i]);
-            }
-        if (ig.size() >= 2) t = internal::hornAlign(ig, im);
+        const InlierFit f = fitOfInliers(pg, places, t, p.outlier_distance_m);
+        if (f.inliers >= 2) t = f.transform;
     }
     double sq = 0.0;
     for (std::size_t i = 0; i < pg.size(); ++i)

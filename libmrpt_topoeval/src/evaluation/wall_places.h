@@ -5,7 +5,6 @@
 // medial axis (relative accuracy and local consistency, doc/quality.md "Measured at the walls"),
 // and a part's turn (brokenness step 7, in evaluate_match.cpp).
 
-#include <mrpt/slam/CICP.h>
 #include <mrpt_topoeval/GraphMatch.h>
 #include <mrpt_topoeval/TopologyGraph.h>
 #include <mrpt_topoeval/evaluation/evaluate_match.h>
@@ -14,19 +13,24 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "matching/wall_agreement.h"
 
 namespace mrpt_topoeval::internal
 {
-// The ICP of walls (a brokenness group's turn, a pair's place): MRPT's CICP, classic, its first
-// matching distance the error a part's fit allows (the root of brokenness_max_squared_error_m2),
-// halved down to two cells.
-constexpr int kWallIcpIterations = 60;
-constexpr std::size_t kMinWallPoints = 20;  // fewer: no refinement (a bare plan's few walls)
-mrpt::slam::CICP::TConfigParams wallIcpOptions(const TopologyGraph& gt, const TopologyGraph& map,
-                                               const QualityParameters& p);
+// The ICP of walls (a brokenness group's turn, a pair's place): the wall points within each
+// vertex's clearance + margin_m in both maps (not thinned: ICP wants them all), aligned by MRPT's
+// CICP, classic, from `start` (map -> ground truth). Its first matching distance is the larger
+// of reach_m and the error a part's fit allows (the root of brokenness_max_squared_error_m2),
+// halved down to two cells. None when either map has fewer than 20 wall points there (a bare
+// plan's few walls).
+std::optional<Transform2D> alignWalls(const TopologyGraph& gt, const TopologyGraph& map,
+                                      const WallIndex& gt_walls, const WallIndex& map_walls,
+                                      const std::vector<std::pair<int, int>>& pairs,
+                                      double margin_m, const Transform2D& start,
+                                      const QualityParameters& p, double reach_m = 0.0);
 
 // Both graphs' wall points in KD-trees, built on first use and shared by the steps that align
 // walls (pair places, brokenness groups' turns). `ok()` is false when either graph has none.
