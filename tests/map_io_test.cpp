@@ -254,6 +254,60 @@ TEST(MapIoYaml, RawModeCopiesGreyAsOccupancy)
     EXPECT_NEAR(pixelCell(g, 3, 0), 1.0 - 100.0 / 255.0, 0.02);
 }
 
+// nav2 Humble's map_saver wrote `free_thresh: 0.25` beside images whose unknown cells are grey
+// 205 (p_occ 0.196): read literally, every unknown cell, the whole outside of the building, is
+// free (navigation2 PR #5278 fixed the saver). In an image of map_saver's greys only, 205 stays
+// unknown, with a note; with another grey in the image, or the option off, the thresholds decide.
+TEST(MapIoYaml, MapSaverUnknownGreyStaysUnknownUnderAHighFreeThreshold)
+{
+    const ScopedTempDir tmp("mapio_saver_unknown");
+    const std::string& dir = tmp.path;
+    const std::vector<int> saver = {0, 254, 205, 255, 254, 0, 254, 205, 205, 254, 0, 254};
+    std::vector<int> other = saver;
+    other[3] = 100;  // a grey map_saver never writes
+    writePgm(dir + "/saver.pgm", kW, kH, saver);
+    writePgm(dir + "/other.pgm", kW, kH, other);
+    auto yaml =
+        [&](const std::string& image, const std::string& free_thresh, const std::string& mode)
+    {
+        const std::string path = dir + "/m.yaml";
+        writeBytes(path, "image: " + image +
+                             "\nresolution: 0.5\norigin: [0, 0, 0]\nnegate: 0\n"
+                             "occupied_thresh: 0.65\nfree_thresh: " +
+                             free_thresh + "\n" + mode);
+        return path;
+    };
+    MapLoadOptions off;
+    off.trinary_unknown_grey = -1;
+    for (const std::string mode : {"", "mode: trinary\n"})
+    {
+        const LoadedMap m = loadMap(yaml("saver.pgm", "0.25", mode));
+        EXPECT_EQ(classify(pixelCell(m.grid, 2, 0)), Cls::Unknown) << mode;
+        EXPECT_EQ(classify(pixelCell(m.grid, 1, 0)), Cls::Free);
+        EXPECT_EQ(classify(pixelCell(m.grid, 3, 0)), Cls::Free);  // 255
+        EXPECT_EQ(classify(pixelCell(m.grid, 0, 0)), Cls::Occupied);
+        ASSERT_EQ(m.notes.size(), 1u);
+        EXPECT_NE(m.notes[0].find("free_thresh 0.25"), std::string::npos) << m.notes[0];
+        EXPECT_NE(m.notes[0].find("trinary_unknown_grey"), std::string::npos) << m.notes[0];
+
+        const LoadedMap literal = loadMap(yaml("saver.pgm", "0.25", mode), off);
+        EXPECT_EQ(classify(pixelCell(literal.grid, 2, 0)), Cls::Free);
+        EXPECT_TRUE(literal.notes.empty());
+
+        const LoadedMap drawn = loadMap(yaml("other.pgm", "0.25", mode));
+        EXPECT_EQ(classify(pixelCell(drawn.grid, 2, 0)), Cls::Free);
+        EXPECT_TRUE(drawn.notes.empty());
+    }
+    // ROS's own default already reads 205 as unknown: nothing to note.
+    const LoadedMap standard = loadMap(yaml("saver.pgm", "0.196", ""));
+    EXPECT_EQ(classify(pixelCell(standard.grid, 2, 0)), Cls::Unknown);
+    EXPECT_TRUE(standard.notes.empty());
+    // Scale mode keeps every grey's probability, as map_server does.
+    const LoadedMap scale = loadMap(yaml("saver.pgm", "0.25", "mode: scale\n"));
+    EXPECT_EQ(classify(pixelCell(scale.grid, 2, 0)), Cls::Free);
+    EXPECT_TRUE(scale.notes.empty());
+}
+
 TEST(MapIoYaml, OriginOffTheCellGridKeepsExactSizeAndMovesLessThanHalfACell)
 {
     const ScopedTempDir tmp("mapio_snap");

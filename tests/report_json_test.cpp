@@ -286,12 +286,13 @@ TEST(ReportJson, EffectiveParametersInIniOrderWithTypes)
     EXPECT_TRUE(contains(params, "\"min_clearance_m\": 0.0000001,")) << params;
     EXPECT_TRUE(contains(params, "\"mode\": \"icp\",")) << params;
     EXPECT_TRUE(contains(params, "\"brokenness_min_vertices\": 7,")) << params;
-    // Keys within a section in the INI file's order too: MapLoad's five as written.
+    // Keys within a section in the INI file's order too: MapLoad's six as written.
     EXPECT_TRUE(
         contains(params,
                  "\"MapLoad\": {\n      \"resolution_m\": 0.05,\n      \"occupied_thresh\": "
                  "0.65,\n      \"free_thresh\": 0.196,\n      \"grey_between_thresholds\": "
-                 "\"auto\",\n      \"max_cells\": 100000000\n    }"))
+                 "\"auto\",\n      \"trinary_unknown_grey\": 205,\n      \"max_cells\": "
+                 "100000000\n    }"))
         << params;
 
     // Every key of the default INI text is there.

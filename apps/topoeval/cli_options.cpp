@@ -58,6 +58,7 @@ LoadedMap loadMapTimed(const std::string& path, const MapLoadOptions& opts, doub
     const auto t0 = Clock::now();
     LoadedMap m = loadMap(path, opts);
     ms = msSince(t0);
+    for (const auto& note : m.notes) printWarning(path + ": " + note);
     return m;
 }
 

@@ -126,7 +126,8 @@ class Map:
     """An occupancy grid map: from a file (:func:`load_map`) or an array (:meth:`from_array`).
 
     ``file`` is the path as given (or the array's name), ``format`` one of ros_yaml, image,
-    gridmap, simplemap, array. ``occupancy()`` gives P(occupied) per cell as float32
+    gridmap, simplemap, array; ``notes`` what the loader read otherwise than literally (e.g. a
+    ROS map whose free_thresh would make its unknown cells free). ``occupancy()`` gives P(occupied) per cell as float32
     (rows, columns) with row 0 at the lowest y (ROS OccupancyGrid order; plot it with
     ``origin="lower"``).
     """
@@ -158,6 +159,9 @@ class Map:
 
     file = property(lambda self: self._m.file)
     format = property(lambda self: self._m.format)
+    notes = property(lambda self: list(self._m.notes),
+                     doc="Where the file was read otherwise than literally, and why (e.g. a ROS "
+                         "map's unknown grey kept unknown under a high free_thresh).")
     width = property(lambda self: self._m.width, doc="Cells along x.")
     height = property(lambda self: self._m.height, doc="Cells along y.")
     resolution_m = property(lambda self: self._m.resolution_m)

@@ -195,6 +195,7 @@ PYBIND11_MODULE(_core, m)
     py::class_<LoadedMap, std::shared_ptr<LoadedMap>>(m, "LoadedMap")
         .def_readonly("file", &LoadedMap::file)
         .def_readonly("format", &LoadedMap::format)
+        .def_readonly("notes", &LoadedMap::notes)
         .def_property_readonly("width", [](const LoadedMap& l) { return l.grid.getSizeX(); })
         .def_property_readonly("height", [](const LoadedMap& l) { return l.grid.getSizeY(); })
         .def_property_readonly("resolution_m",

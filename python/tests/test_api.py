@@ -145,3 +145,17 @@ def test_errors_are_value_and_os_errors():
     with pytest.raises(TypeError):
         te.Config(42)
     assert os.path.basename(te.load_map(MAP_A).file) == "map_6ccdcaa.yaml"
+
+
+def test_load_map_notes_a_ros_unknown_grey_kept_unknown(tmp_path):
+    # nav2 Humble's map_saver wrote free_thresh 0.25, which reads its unknown grey 205 as free.
+    pixels = np.array([[0, 254, 205], [254, 205, 254]], dtype=np.uint8)
+    (tmp_path / "m.pgm").write_bytes(b"P5\n3 2\n255\n" + pixels.tobytes())
+    (tmp_path / "m.yaml").write_text("image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
+                                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.25\n")
+    kept = te.load_map(str(tmp_path / "m.yaml"))
+    assert len(kept.notes) == 1 and "free_thresh 0.25" in kept.notes[0]
+    assert kept.occupancy()[0, 1] == pytest.approx(0.5)  # bottom row, middle: grey 205
+    literal = te.load_map(str(tmp_path / "m.yaml"), {"MapLoad": {"trinary_unknown_grey": -1}})
+    assert literal.notes == []
+    assert literal.occupancy()[0, 1] < 0.1

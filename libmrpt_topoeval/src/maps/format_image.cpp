@@ -194,10 +194,12 @@ private:
 };
 
 /** Decodes an image file whose header has already been checked, and fills `grid` with it,
- * lower-left pixel corner at (x0, y0). `prefix` starts every message. */
-void imageToGrid(const std::string& image_path, const internal::ImageHeader& hdr,
-                 const PixelRule& rule_in, double res, double x0, double y0,
-                 COccupancyGridMap2D& grid, const std::string& prefix)
+ * lower-left pixel corner at (x0, y0). `prefix` starts every message. Returns the notes of
+ * PixelRule::map_saver_unknown_grey. */
+std::vector<std::string> imageToGrid(const std::string& image_path,
+                                     const internal::ImageHeader& hdr, const PixelRule& rule_in,
+                                     double res, double x0, double y0, COccupancyGridMap2D& grid,
+                                     const std::string& prefix)
 {
     // IMREAD_UNCHANGED keeps 16-bit samples and does not apply EXIF rotation (a map's pixel
     // layout is its geometry); alpha is dropped below, as ROS map_server ignores it.
@@ -239,9 +241,9 @@ void imageToGrid(const std::string& image_path, const internal::ImageHeader& hdr
     std::vector<CellType> lut(n_sums);
     const double denom = static_cast<double>(used) * white;
     PixelRule rule = rule_in;
-    if (rule.detect_probabilistic && rule.mode == PixelMode::Trinary)
+    // Which channel sums the image holds (one pass, only when a rule below asks).
+    auto sumsPresent = [&]
     {
-        // Distinct channel sums whose probability lies between the thresholds.
         std::vector<char> seen(n_sums, 0);
         for (int y = 0; y < img.rows; ++y)
             for (int x = 0; x < img.cols; ++x)
@@ -255,6 +257,12 @@ void imageToGrid(const std::string& image_path, const internal::ImageHeader& hdr
                 // the pixel loop below reads them.
                 seen[std::min(sum, n_sums - 1)] = 1;
             }
+        return seen;
+    };
+    if (rule.detect_probabilistic && rule.mode == PixelMode::Trinary)
+    {
+        // Distinct channel sums whose probability lies between the thresholds.
+        const std::vector<char> seen = sumsPresent();
         std::size_t between = 0;
         PixelRule scale = rule;
         scale.mode = PixelMode::Scale;
@@ -269,12 +277,42 @@ void imageToGrid(const std::string& image_path, const internal::ImageHeader& hdr
         lut[s] = COccupancyGridMap2D::p2l(
             static_cast<float>(pixelToPFree(static_cast<double>(s) / denom, rule)));
 
+    // ROS map_saver's unknown grey that the YAML's free_thresh makes free (nav2 Humble wrote
+    // free_thresh 0.25): in an image of map_saver's greys only it is unknown, not free.
+    std::vector<std::string> notes;
+    const int g = rule.map_saver_unknown_grey;
+    if (rule.mode == PixelMode::Trinary && g >= 0 && g <= 254 && !rule.negate &&
+        img.depth() == CV_8U && white == 255)
+    {
+        const std::size_t unknown_sum = static_cast<std::size_t>(used) * g;
+        if (pixelToPFree(static_cast<double>(unknown_sum) / denom, rule) == 1.0)
+        {
+            const std::vector<char> seen = sumsPresent();
+            bool saver_greys_only = seen[unknown_sum] != 0;
+            for (std::size_t s = 0; s < n_sums && saver_greys_only; ++s)
+                saver_greys_only = !seen[s] || s == 0 || s == unknown_sum ||
+                                   s == static_cast<std::size_t>(used) * 254 ||
+                                   s == static_cast<std::size_t>(used) * 255;
+            if (saver_greys_only)
+            {
+                lut[unknown_sum] = COccupancyGridMap2D::p2l(0.5f);
+                notes.push_back("grey " + std::to_string(g) +
+                                " (ROS map_saver's unknown) read as unknown, not free as "
+                                "free_thresh " +
+                                num(rule.free_thresh) +
+                                " says (nav2 Humble's map_saver YAML; [MapLoad] "
+                                "trinary_unknown_grey = -1 keeps it free)");
+            }
+        }
+    }
+
     allocateGrid(grid, hdr.width, hdr.height, res, x0, y0, prefix);
     if (img.depth() == CV_8U)
         copyPixels<std::uint8_t>(img, used, lut, grid);
     else
         copyPixels<std::uint16_t>(img, used, lut, grid);
     markAsLoaded(grid);
+    return notes;
 }
 
 /** Reads and size-checks an image header; `prefix` replaces the image path at the start of

@@ -459,10 +459,12 @@ LoadedMap loadRosYaml(const std::string& path, const MapLoadOptions& opts)
     checkReadableFile(image_file, prefix);
     const internal::ImageHeader hdr = checkedImageHeader(image_file, prefix, opts);
 
+    rule.map_saver_unknown_grey = opts.trinary_unknown_grey;
+
     LoadedMap out;
     out.file = path;
     out.format = "ros_yaml";
-    imageToGrid(image_file, hdr, rule, res, origin[0], origin[1], out.grid, prefix);
+    out.notes = imageToGrid(image_file, hdr, rule, res, origin[0], origin[1], out.grid, prefix);
     return out;
 }
 

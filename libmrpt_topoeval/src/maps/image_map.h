@@ -31,6 +31,10 @@ struct PixelRule
     /** Trinary without an explicit mode: switch to Scale when the image has many grey levels
      * between the thresholds (a probabilistic rendering). */
     bool detect_probabilistic = false;
+    /** Trinary only, >= 0: the grey ROS map_saver writes for unknown cells. If the thresholds
+     * make it free and the image holds no grey but 0, this, 254 and 255 (a map_saver image),
+     * it is read as unknown (MapLoadOptions::trinary_unknown_grey says why). */
+    int map_saver_unknown_grey = -1;
 };
 
 /** Sets `grid` to exactly `w` x `h` cells of `res` metres, lower-left corner at (x0, y0)
@@ -45,10 +49,13 @@ void markAsLoaded(mrpt::maps::COccupancyGridMap2D& grid);
 void applyGreyOption(PixelRule& rule, const MapLoadOptions& opts, const std::string& path);
 
 /** Decodes an image file whose header has already been checked, and fills `grid` with it,
- * lower-left pixel corner at (x0, y0). `prefix` starts every message. */
-void imageToGrid(const std::string& image_path, const internal::ImageHeader& hdr,
-                 const PixelRule& rule_in, double res, double x0, double y0,
-                 mrpt::maps::COccupancyGridMap2D& grid, const std::string& prefix);
+ * lower-left pixel corner at (x0, y0). `prefix` starts every message. Returns notes on where
+ * the image was read otherwise than the rule's literal meaning (see PixelRule). */
+std::vector<std::string> imageToGrid(const std::string& image_path,
+                                     const internal::ImageHeader& hdr, const PixelRule& rule_in,
+                                     double res, double x0, double y0,
+                                     mrpt::maps::COccupancyGridMap2D& grid,
+                                     const std::string& prefix);
 
 /** Reads and size-checks an image header; `prefix` replaces the image path at the start of
  * any message (used when the image is named by a YAML file). */

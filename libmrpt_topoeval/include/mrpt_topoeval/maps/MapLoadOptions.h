@@ -29,6 +29,14 @@ struct MapLoadOptions : public mrpt::config::CLoadableOptions
      * as in a ROS trinary image (one unknown grey, 205). "unknown" or "probability" force
      * one reading. */
     std::string grey_between_thresholds = "auto";
+    /** The grey ROS map_saver writes for unknown cells (205: (255 - 205) / 255 = 0.196). A
+     * ROS YAML in trinary mode whose free_thresh is above that reads it as free: nav2 Humble's
+     * map_saver wrote free_thresh 0.25 (fixed in navigation2 PR #5278), and every unknown cell
+     * of such a map, the whole outside of the building, became free space. When a trinary
+     * map's image holds only map_saver's greys (0, this, 254, and 255), this grey is read as
+     * unknown whatever the thresholds say, with a note. -1 = off: the thresholds decide, as in
+     * map_server. */
+    int trinary_unknown_grey = 205;
     /** Largest map accepted, in cells (width x height). Image headers are checked against it
      * before any pixel is decoded. Default 10^8 cells (10000 x 10000). */
     std::uint64_t max_cells = 100'000'000ULL;

@@ -18,6 +18,9 @@ struct LoadedMap
     mrpt::maps::COccupancyGridMap2D grid;
     std::string file;    //!< The path as given.
     std::string format;  //!< "ros_yaml", "image", "gridmap" or "simplemap".
+    /** Where the file was read otherwise than its literal meaning, and why (e.g. a ROS map
+     * whose free_thresh would make its unknown cells free). Empty for most maps. */
+    std::vector<std::string> notes;
 };
 
 /** The map file formats loadMap() reads. */
