@@ -547,6 +547,59 @@ TEST(GraphBuilder, OneCellWallGapDoesNotChangeTheGraph)
     EXPECT_EQ(two_doors.edges[0].from, two_doors.edges[0].to);
 }
 
+// The cleaning closings run in tiles of 256 cells with a margin (build_graph.cpp): a speck or a
+// slot on a tile's seam is closed as anywhere else. Two 5 m wide rooms 18 m tall (rows 256 and
+// 512 are seams at y = 12.8 m and 25.6 m), the right one across the column seam at x = 12.8 m.
+TEST(GraphBuilder, SpecksAndWallSlotsOnTileSeamsAreClosedAsElsewhere)
+{
+    const auto rooms = []
+    {
+        GridSketch s(14.0, 20.0);
+        s.carve(1.0, 1.0, 6.0, 19.0).carve(6.2, 1.0, 13.2, 19.0).carve(6.0, 11.7, 6.2, 12.7);
+        return s;
+    };
+    // Unknown specks of 1 x 2 cells across the row seam (left room) and the column seam (right
+    // room). With islands and enclosed unknown off, only the speck filling
+    // (unknown_fill_radius_m) removes them.
+    GraphBuilderParameters no_islands;
+    no_islands.min_island_size_m = 0.0;
+    no_islands.enclosed_unknown_min_free_share = 0.0;
+    const TopologyGraph clean = buildTopologyGraph(rooms().grid(), no_islands);
+    GridSketch specks = rooms();
+    specks.unknown(3.0, 12.75, 3.05, 12.85).unknown(12.75, 5.0, 12.85, 5.05);
+    expectSameGraph(clean, buildTopologyGraph(specks.grid(), no_islands));
+    GraphBuilderParameters no_fill = no_islands;
+    no_fill.unknown_fill_radius_m = 0.0;
+    // Unfilled, each speck splits its room's skeleton around it: the left room's upper dead end
+    // and the right room's lower one move.
+    const TopologyGraph unfilled = buildTopologyGraph(specks.grid(), no_fill);
+    EXPECT_EQ(vertexNear(unfilled, 3.475, 16.475), nullptr);
+    EXPECT_EQ(vertexNear(unfilled, 9.675, 4.475), nullptr);
+    ASSERT_NE(vertexNear(clean, 3.475, 16.475), nullptr);
+    ASSERT_NE(vertexNear(clean, 9.675, 4.475), nullptr);
+
+    // A one-cell slot 0.15 m above the 1 m door leaves a piece of wall across the row seam
+    // (cells 254-256) standing free: the gap closing makes the wall whole (as in
+    // OneCellWallGapDoesNotChangeTheGraph); without it the piece is an island and the door
+    // 0.2 m wider.
+    const TopologyGraph whole = buildTopologyGraph(rooms().grid());
+    GridSketch slot = rooms();
+    slot.carve(6.0, 12.85, 6.2, 12.9);
+    const TopologyGraph closed = buildTopologyGraph(slot.grid());
+    expectSameGraph(whole, closed);
+    auto doorClearance = [](const TopologyGraph& g)
+    {
+        double c = 1e9;
+        for (const auto& e : g.edges) c = std::min(c, e.min_clearance_m);
+        return c;
+    };
+    EXPECT_NEAR(doorClearance(closed), doorClearance(whole), 0.03);
+    EXPECT_NEAR(doorClearance(whole), 0.5, 0.08);
+    GraphBuilderParameters no_closing;
+    no_closing.wall_gap_close_radius_m = 0.0;
+    EXPECT_GT(doorClearance(buildTopologyGraph(slot.grid(), no_closing)), 0.58);
+}
+
 TEST(GraphBuilder, EveryPieceOfAUsefulSizeIsKept)
 {
     // Two corridors with no passage between them: 12 m and 8 m long. The paper keeps the
