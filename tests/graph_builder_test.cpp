@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <mrpt_topoeval/errors.h>
 #include <mrpt_topoeval/graph/build_graph.h>
+#include <mrpt_topoeval/maps/load_map.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,7 @@
 
 #include "../libmrpt_topoeval/src/graph/GraphEditor.h"
 #include "synthetic_maps.h"
+#include "test_paths.h"
 
 using namespace mrpt_topoeval;
 using namespace mrpt_topoeval::testing;
@@ -548,8 +550,9 @@ TEST(GraphBuilder, OneCellWallGapDoesNotChangeTheGraph)
 }
 
 // The cleaning closings run in tiles of 256 cells with a margin (build_graph.cpp): a speck or a
-// slot on a tile's seam is closed as anywhere else. Two 5 m wide rooms 18 m tall (rows 256 and
-// 512 are seams at y = 12.8 m and 25.6 m), the right one across the column seam at x = 12.8 m.
+// slot on a tile's seam is closed as anywhere else. Two rooms 18 m tall (row 256 is a seam, at
+// y = 12.8 m), the left one 5 m wide, the right one 7 m, across the column seam at x = 12.8 m.
+// The sketch is all known, so the cleaning works on the whole grid and the seams are the grid's.
 TEST(GraphBuilder, SpecksAndWallSlotsOnTileSeamsAreClosedAsElsewhere)
 {
     const auto rooms = []
@@ -585,7 +588,9 @@ TEST(GraphBuilder, SpecksAndWallSlotsOnTileSeamsAreClosedAsElsewhere)
     const TopologyGraph whole = buildTopologyGraph(rooms().grid());
     GridSketch slot = rooms();
     slot.carve(6.0, 12.85, 6.2, 12.9);
-    const TopologyGraph closed = buildTopologyGraph(slot.grid());
+    GraphBuildStats st;
+    const TopologyGraph closed = buildTopologyGraph(slot.grid(), {}, &st);
+    EXPECT_EQ(st.work_cells, 280u * 400u);
     expectSameGraph(whole, closed);
     auto doorClearance = [](const TopologyGraph& g)
     {
@@ -705,6 +710,37 @@ TEST(GraphBuilder, ADeadEndStopsWhereItsCorridorEndsNotInACorner)
 // it must give exactly the graph that storing them and dissolveDegreeTwo() gives (vertex order,
 // edge order and direction, paths, clearances), which the build used before. Random skeletons
 // with dead ends, junctions, multi-edges, pure rings and unused nodes.
+TEST(GraphBuilder, AWallWithGapsKeepsItsCorridorsDeadEnd)
+{
+    // RTAB-Map's lidar map of the Gazebo office (../shared/data, MIT; same frame as its ground
+    // truth): its corridor walls are one cell thick with gaps of 1-5 cells every metre or so,
+    // and behind them stray free and occupied cells. Several gaps grow a branch from the west
+    // corridor's axis, each a junction on it. Pruned in one pass, the first junction, 0.9 m
+    // from the corridor's dead end, had the dead end within its disc (junction_disc_ratio) and
+    // cut it, and the dead end stood 0.85 m east of the ground truth's; the branches themselves
+    // go as corner spurs. The junction disc now waits for them (GraphEditor::pruneDeadEnds).
+    // (A synthetic wall with clean gaps grows no branch: each would be one Voronoi segment
+    // from the gap to the axis, dropped whole by the clearance filter.)
+    const auto gt_file = sharedDataFile("gazebo_slam/office/office_ground_truth.yaml");
+    const auto map_file = sharedDataFile("gazebo_slam/office/lidar_rtabmap_map.yaml");
+    if (!gt_file || !map_file) GTEST_SKIP() << "no ../shared/data";
+    auto westDeadEnd = [](const TopologyGraph& g)
+    {
+        const TopoVertex* west = nullptr;
+        for (const auto& v : g.vertices)
+            if (v.degree() == 1 && (!west || v.position_m.x() < west->position_m.x())) west = &v;
+        return west;
+    };
+    const TopologyGraph gt = buildTopologyGraph(loadMap(*gt_file).grid);
+    const TopologyGraph map = buildTopologyGraph(loadMap(*map_file).grid);
+    const TopoVertex* g = westDeadEnd(gt);
+    const TopoVertex* m = westDeadEnd(map);
+    ASSERT_TRUE(g && m);
+    EXPECT_LT((g->position_m - m->position_m).norm(), 0.3)
+        << "ground truth (" << g->position_m.transpose() << "), map (" << m->position_m.transpose()
+        << ")";
+}
+
 TEST(GraphBuilder, ChainsFromTheSkeletonEqualStoredSegmentsDissolved)
 {
     using internal::GraphEditor;

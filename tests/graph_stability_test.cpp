@@ -141,20 +141,28 @@ TEST(GraphStability, RealIntel) { expectStableRealMap("radish/intel-corrected_re
 // as probabilities, the laser fans seen free once or twice are free space, and the reference
 // graph has their branches (69 non-spurious vertices, was 36); rotated by 290 deg and resampled
 // it has 62 (10.1 %). The bound is what was measured.
-TEST(GraphStability, RealAces) { expectStableRealMap("radish/aces-corrected_ref.yaml", 0.11); }
+// Since session 19 dead ends are pruned in two phases (doc/topology_graph.md step 3): the
+// junction-disc rule no longer cuts a dead end together with the corner spurs that made its
+// junction. The Radish references keep 0-4 more vertices, some of which come and go with the
+// grid's angle: the largest deviations below rose from 9.2 / 10.4 / 7.7 / 8.8 % to 11.6 / 11.1 /
+// 9.9 / 11.2 % (Aces, Freiburg 079, Freiburg 101, CSAIL; mean over the perturbations 4.6 / 3.4 /
+// 3.4 / 3.5 -> 4.7 / 3.5 / 4.8 / 3.7 %), Intel's fell from 4.5 to 3.5 %. The corpus's measure of
+// stability, true pairs on the moved maps, rose (doc/validation.md, session 19). The bounds are
+// what was measured.
+TEST(GraphStability, RealAces) { expectStableRealMap("radish/aces-corrected_ref.yaml", 0.12); }
 // Freiburg 079 rotated by 17 degrees keeps 86 of its 96 non-spurious vertices (10.4 %; 88 before
 // dead ends were moved out of corners): dead-end edges moved back under
 // spurious_dead_end_length_m become spurious. The corpus's measure of stability (ground-truth
 // vertices with a counterpart, doc/validation.md) rose for every kind of map with that change.
 TEST(GraphStability, RealFreiburg079)
 {
-    expectStableRealMap("radish/freiburg-079-corrected_ref.yaml", 0.11);
+    expectStableRealMap("radish/freiburg-079-corrected_ref.yaml", 0.115);
 }
 TEST(GraphStability, RealFreiburg101)
 {
     expectStableRealMap("radish/freiburg-101-corrected_ref.yaml");
 }
-TEST(GraphStability, RealCsail) { expectStableRealMap("radish/csail-corrected_ref.yaml"); }
+TEST(GraphStability, RealCsail) { expectStableRealMap("radish/csail-corrected_ref.yaml", 0.115); }
 
 // The furnished house (a robot map full of chair and table legs) is the one map measured outside
 // 10%: gaps between legs are close to 2 x min_clearance_m, and whether the skeleton passes

@@ -58,8 +58,13 @@ LoadedMap loadMapTimed(const std::string& path, const MapLoadOptions& opts, doub
     const auto t0 = Clock::now();
     LoadedMap m = loadMap(path, opts);
     ms = msSince(t0);
-    for (const auto& note : m.notes) printWarning(path + ": " + note);
+    printLoadNotes(m);
     return m;
+}
+
+void printLoadNotes(const LoadedMap& m)
+{
+    for (const auto& note : m.notes) printWarning(m.file + ": " + note);
 }
 
 std::vector<std::pair<std::string, double>> orderedTimings(const std::map<std::string, double>& t,

@@ -38,8 +38,13 @@ bool endsWithHtml(const std::string& path);
 /** The parameters as the INI text `topoeval config --write` would give for them. */
 std::string iniText(const Parameters& params);
 
-/** Loads a map, storing the time it took in `ms`. \throws InputError */
+/** Loads a map, storing the time it took in `ms`, and prints its notes (printLoadNotes).
+ * \throws InputError */
 LoadedMap loadMapTimed(const std::string& path, const MapLoadOptions& opts, double& ms);
+
+/** Prints each of a loaded map's notes (LoadedMap::notes: where it was read otherwise than
+ * literally) as a warning naming its file. */
+void printLoadNotes(const LoadedMap& m);
 
 /** The steps of `t` in the order `order` lists them, then the others alphabetically, so a new
  * step still shows up. */

@@ -37,6 +37,8 @@ void evaluateOne(const TopologyGraph& gt_graph, const mrpt::maps::COccupancyGrid
         const LoadedMap m = loadMap(res.file, params.map_load);
         TopologyGraph graph;
         res.report = evaluate(gt_graph, gt_grid, m.grid, params, &graph);
+        // Evaluations run in threads: the loader's notes go with the map's report.
+        for (const auto& note : m.notes) res.report.messages.push_back("map: " + note);
         if (graph.vertices.empty() && graph.warnings.empty())
             res.report.messages.push_back("map: the Topology Graph is empty");
         if (html)

@@ -462,8 +462,11 @@ void readKeypointCsv(const fs::path& file, Points& map, Points& gt)
     {
         line = line.substr(0, line.find('#'));
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        if (header)  // gt_x_m,gt_y_m,map_x_m,map_y_m
+        if (header)
         {
+            if (line.rfind("gt_x_m,gt_y_m,map_x_m,map_y_m", 0) != 0)
+                throw std::runtime_error(file.string() +
+                                         ": the first row must be gt_x_m,gt_y_m,map_x_m,map_y_m");
             header = false;
             continue;
         }

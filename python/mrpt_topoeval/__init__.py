@@ -127,9 +127,9 @@ class Map:
 
     ``file`` is the path as given (or the array's name), ``format`` one of ros_yaml, image,
     gridmap, simplemap, array; ``notes`` what the loader read otherwise than literally (e.g. a
-    ROS map whose free_thresh would make its unknown cells free). ``occupancy()`` gives P(occupied) per cell as float32
-    (rows, columns) with row 0 at the lowest y (ROS OccupancyGrid order; plot it with
-    ``origin="lower"``).
+    ROS map whose free_thresh would make its unknown cells free). ``occupancy()`` gives
+    P(occupied) per cell as float32 (rows, columns) with row 0 at the lowest y (ROS
+    OccupancyGrid order; plot it with ``origin="lower"``).
     """
 
     def __init__(self, loaded):

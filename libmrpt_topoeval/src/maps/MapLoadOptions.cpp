@@ -24,7 +24,7 @@ TOPOEVAL_PARAMETER_TABLE(
     word(TOPOEVAL_KEY(grey_between_thresholds), {"auto", "unknown", "probability"},
          "images without a ROS mode: pixels between the thresholds are unknown, or keep "
          "their probability (auto: when >4 such greys)"),
-    integer(TOPOEVAL_KEY(trinary_unknown_grey), "grey 0-255",
+    integer(TOPOEVAL_KEY(trinary_unknown_grey), "grey 0-254",
             "ROS trinary maps of map_saver's greys only: this grey is unknown even if "
             "free_thresh says free (nav2 Humble wrote 0.25); -1 = off",
             atLeast(-1).atMost(254)),

@@ -281,7 +281,7 @@ std::vector<std::string> imageToGrid(const std::string& image_path,
     // free_thresh 0.25): in an image of map_saver's greys only it is unknown, not free.
     std::vector<std::string> notes;
     const int g = rule.map_saver_unknown_grey;
-    if (rule.mode == PixelMode::Trinary && g >= 0 && g <= 254 && !rule.negate &&
+    if (rule.mode == PixelMode::Trinary && g >= 0 && g <= 254 && !rule.negate && used == 1 &&
         img.depth() == CV_8U && white == 255)
     {
         const std::size_t unknown_sum = static_cast<std::size_t>(used) * g;
@@ -293,6 +293,12 @@ std::vector<std::string> imageToGrid(const std::string& image_path,
                 saver_greys_only = !seen[s] || s == 0 || s == unknown_sum ||
                                    s == static_cast<std::size_t>(used) * 254 ||
                                    s == static_cast<std::size_t>(used) * 255;
+            if (!saver_greys_only && seen[unknown_sum])
+                notes.push_back("grey " + std::to_string(g) +
+                                " (ROS map_saver's unknown) read as free, as free_thresh " +
+                                num(rule.free_thresh) +
+                                " says: the image holds other greys than map_saver's, so it "
+                                "was not written by map_saver");
             if (saver_greys_only)
             {
                 lut[unknown_sum] = COccupancyGridMap2D::p2l(0.5f);
@@ -300,7 +306,7 @@ std::vector<std::string> imageToGrid(const std::string& image_path,
                                 " (ROS map_saver's unknown) read as unknown, not free as "
                                 "free_thresh " +
                                 num(rule.free_thresh) +
-                                " says (nav2 Humble's map_saver YAML; [MapLoad] "
+                                " says (as nav2 Humble's map_saver wrote it; [MapLoad] "
                                 "trinary_unknown_grey = -1 keeps it free)");
             }
         }
