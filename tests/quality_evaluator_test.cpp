@@ -213,6 +213,42 @@ TEST(QualityEvaluator, OneWrongPairDoesNotTurnAPart)
     EXPECT_GT(groupTurn(paper), 2.0);
 }
 
+// Two groups of one part are merged once their outliers have left: the star of the test above
+// (its dead end a wrong pair, 1 m off) and the same star 30 m east, exact, two graph pieces, so
+// growth makes two groups. The wrong pair turns the first group's fit by about 3 degrees, which
+// places the other group's vertices 1.5 m apart: not merged then. Without it, both fits are the
+// map's turn: one part, brokenness 0 (before session 19 the merging ran only before the
+// outliers left, and the part counted as a break; the validation corpus's
+// multi_wing_1001/broken_1 found its wing as two groups turned -83.7 and -83.6 degrees).
+TEST(QualityEvaluator, GroupsOfOnePartMergeOnceTheirOutliersLeave)
+{
+    const std::vector<Eigen::Vector2d> star = {{0, 0},    {0, 2.5},    {0, -2.5},
+                                               {-2.5, 0}, {-1.8, 1.8}, {15, 0}};
+    std::vector<Eigen::Vector2d> at;
+    std::vector<std::pair<int, int>> edges;
+    for (const double dx : {0.0, 30.0})
+    {
+        const int base = static_cast<int>(at.size());
+        for (const auto& p : star) at.push_back(p + Eigen::Vector2d(dx, 0.0));
+        for (int k = 1; k < 6; ++k) edges.emplace_back(base, base + k);
+    }
+    const Transform2D turn{4.0, -3.0, 20.0};  // ground truth -> map
+    std::vector<Eigen::Vector2d> moved;
+    for (const auto& p : at) moved.push_back(turn.apply(p));
+    moved[5] += Eigen::Rotation2Dd(20.0 * kDeg) * Eigen::Vector2d(0.0, 1.0);
+    const TopologyGraph g = handGraph(at, edges), m = handGraph(moved, edges);
+    GraphMatch match;
+    for (int i = 0; i < 12; ++i) match.pairs.push_back({i, i, MatchStage::Isomorphism, 1.0, 0});
+    match.isomorphism = 12;
+    match.isomorphism_sizes = {6, 6};
+    const QualityReport r = evaluateMatch(g, m, match, QualityParameters{});
+    EXPECT_EQ(r.brokenness.degree, 0);
+    ASSERT_EQ(r.brokenness.groups.size(), 1u);
+    EXPECT_EQ(r.brokenness.groups[0].gt_vertices.size(), 11u);  // the wrong pair left
+    EXPECT_LT(std::abs(std::remainder(r.brokenness.groups[0].transform.yaw_deg + 20.0, 360.0)),
+              0.01);
+}
+
 // A pair's error is measured at its walls (pair_wall_margin_m): a vertex of a room slides along
 // the medial axis between two maps of it by a fraction of the room's half width, its walls do
 // not. Nine rooms (boxes 2 m wide, 3 m apart), each vertex in its room's middle; the map is the

@@ -82,11 +82,18 @@ class Cluster:
         self.scheduler = self.start(dask_command("scheduler") + [
             "--host", "127.0.0.1", "--port", "0", "--no-dashboard",
             "--scheduler-file", sched_file], os.path.join(tmp, "scheduler.log"))
+        # The scheduler creates its file before it has written it: wait until it parses (an
+        # empty file once made this fixture fail under a loaded machine, session 19).
         deadline = time.time() + 60
-        while not os.path.exists(sched_file) and time.time() < deadline:
-            time.sleep(0.1)
-        with open(sched_file) as f:
-            self.address = json.load(f)["address"]
+        info = None
+        while info is None and time.time() < deadline:
+            try:
+                with open(sched_file) as f:
+                    info = json.load(f)
+            except (OSError, ValueError):
+                time.sleep(0.1)
+        assert info is not None, f"no scheduler file {sched_file} within 60 s"
+        self.address = info["address"]
         assert self.address.startswith("tcp://127.0.0.1:")
         self.workers = [self.start(dask_command("worker") + [
             self.address, "--nthreads", "1", "--nworkers", "1", "--no-nanny",

@@ -349,22 +349,27 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                        double(n)
                  : 0.0;
     };
-    for (bool merged = true; merged;)
+    auto mergeSamePlacement = [&]
     {
-        merged = false;
-        for (std::size_t i = 0; i < b.groups.size() && !merged; ++i)
-            for (std::size_t j = i + 1; j < b.groups.size() && !merged; ++j)
-            {
-                if (placementGap(b.groups[i], b.groups[j]) > p.brokenness_max_squared_error_m2)
-                    continue;
-                std::vector<int> u = b.groups[i].gt_vertices;
-                u.insert(u.end(), b.groups[j].gt_vertices.begin(), b.groups[j].gt_vertices.end());
-                b.groups[i].transform = fitOf(u, &b.groups[i].squared_error_m2);
-                b.groups[i].gt_vertices = std::move(u);
-                b.groups.erase(b.groups.begin() + static_cast<long>(j));
-                merged = true;
-            }
-    }
+        for (bool merged = true; merged;)
+        {
+            merged = false;
+            for (std::size_t i = 0; i < b.groups.size() && !merged; ++i)
+                for (std::size_t j = i + 1; j < b.groups.size() && !merged; ++j)
+                {
+                    if (placementGap(b.groups[i], b.groups[j]) > p.brokenness_max_squared_error_m2)
+                        continue;
+                    std::vector<int> u = b.groups[i].gt_vertices;
+                    u.insert(u.end(), b.groups[j].gt_vertices.begin(),
+                             b.groups[j].gt_vertices.end());
+                    b.groups[i].transform = fitOf(u, &b.groups[i].squared_error_m2);
+                    b.groups[i].gt_vertices = std::move(u);
+                    b.groups.erase(b.groups.begin() + static_cast<long>(j));
+                    merged = true;
+                }
+        }
+    };
+    mergeSamePlacement();
     // A vertex that a bigger part's transform places within the threshold belongs to that
     // part: near a break, leftovers of both sides plus a few wrong pairs can form a small group
     // with a compromise rotation. Bigger groups take such members; what falls below the
@@ -418,6 +423,8 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                 g.gt_vertices.erase(g.gt_vertices.begin() + (worst - e2.begin()));
             }
     for (auto& g : b.groups) g.transform = fitOf(g.gt_vertices, &g.squared_error_m2);
+    // Without their outliers two groups of one part may now place it alike: merge again.
+    mergeSamePlacement();
     // Small parts (ours): a part of 3-4 matched vertices is too small for the paper's rule, but
     // when its own fit is good and every counted group places its map vertices clearly
     // elsewhere (mean squared gap of at least brokenness_part_min_gap_m2), it is a part turned
