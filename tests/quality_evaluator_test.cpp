@@ -178,6 +178,44 @@ TopologyGraph handGraph(const std::vector<Eigen::Vector2d>& at,
 }
 }  // namespace
 
+namespace
+{
+/** Stars of a junction with four rooms 2.5 m round it and a corridor's dead end 15 m away, one
+ * per offset along x (graph pieces of their own); the map is the ground truth turned by 20
+ * degrees, but the first star's dead end sits 1 m across its corridor from where the turn puts
+ * it: a wrong pair. Every vertex is matched to its own, one isomorphism per star. */
+struct TurnedStars
+{
+    TopologyGraph gt, map;
+    GraphMatch match;
+};
+TurnedStars turnedStarsWithAWrongPair(const std::vector<double>& offsets)
+{
+    const std::vector<Eigen::Vector2d> star = {{0, 0},    {0, 2.5},    {0, -2.5},
+                                               {-2.5, 0}, {-1.8, 1.8}, {15, 0}};
+    std::vector<Eigen::Vector2d> at;
+    std::vector<std::pair<int, int>> edges;
+    TurnedStars t;
+    for (const double dx : offsets)
+    {
+        const int base = static_cast<int>(at.size());
+        for (const auto& p : star) at.push_back(p + Eigen::Vector2d(dx, 0.0));
+        for (int k = 1; k < 6; ++k) edges.emplace_back(base, base + k);
+        t.match.isomorphism_sizes.push_back(6);
+    }
+    const Transform2D turn{4.0, -3.0, 20.0};  // ground truth -> map
+    std::vector<Eigen::Vector2d> moved;
+    for (const auto& p : at) moved.push_back(turn.apply(p));
+    moved[5] += Eigen::Rotation2Dd(20.0 * kDeg) * Eigen::Vector2d(0.0, 1.0);
+    t.gt = handGraph(at, edges);
+    t.map = handGraph(moved, edges);
+    const int n = static_cast<int>(at.size());
+    for (int i = 0; i < n; ++i) t.match.pairs.push_back({i, i, MatchStage::Isomorphism, 1.0, 0});
+    t.match.isomorphism = n;
+    return t;
+}
+}  // namespace
+
 TEST(QualityEvaluator, OneWrongPairDoesNotTurnAPart)
 {
     // A junction with four rooms 2.5 m round it and a corridor's dead end 15 m away; the map
@@ -186,18 +224,9 @@ TEST(QualityEvaluator, OneWrongPairDoesNotTurnAPart)
     // turns by about 3 degrees to absorb it, within the mean squared error); the fit of the
     // other five places it 1 m off, over brokenness_outlier_ratio x the threshold's root
     // (0.89 m), so it leaves and the part keeps its own turn.
-    const std::vector<Eigen::Vector2d> at = {{0, 0},    {0, 2.5},    {0, -2.5},
-                                             {-2.5, 0}, {-1.8, 1.8}, {15, 0}};
-    const std::vector<std::pair<int, int>> edges = {{0, 1}, {0, 2}, {0, 3}, {0, 4}, {0, 5}};
-    const Transform2D turn{4.0, -3.0, 20.0};  // ground truth -> map
-    std::vector<Eigen::Vector2d> moved;
-    for (const auto& p : at) moved.push_back(turn.apply(p));
-    moved[5] += Eigen::Rotation2Dd(20.0 * kDeg) * Eigen::Vector2d(0.0, 1.0);
-    const TopologyGraph g = handGraph(at, edges), m = handGraph(moved, edges);
-    GraphMatch match;
-    for (int i = 0; i < 6; ++i) match.pairs.push_back({i, i, MatchStage::Isomorphism, 1.0, 0});
-    match.isomorphism = 6;
-    match.isomorphism_sizes = {6};
+    const TurnedStars t = turnedStarsWithAWrongPair({0.0});
+    const TopologyGraph &g = t.gt, &m = t.map;
+    const GraphMatch& match = t.match;
     auto groupTurn = [&](const QualityParameters& qp)
     {
         const QualityReport r = evaluateMatch(g, m, match, qp);
@@ -222,25 +251,7 @@ TEST(QualityEvaluator, OneWrongPairDoesNotTurnAPart)
 // multi_wing_1001/broken_1 found its wing as two groups turned -83.7 and -83.6 degrees).
 TEST(QualityEvaluator, GroupsOfOnePartMergeOnceTheirOutliersLeave)
 {
-    const std::vector<Eigen::Vector2d> star = {{0, 0},    {0, 2.5},    {0, -2.5},
-                                               {-2.5, 0}, {-1.8, 1.8}, {15, 0}};
-    std::vector<Eigen::Vector2d> at;
-    std::vector<std::pair<int, int>> edges;
-    for (const double dx : {0.0, 30.0})
-    {
-        const int base = static_cast<int>(at.size());
-        for (const auto& p : star) at.push_back(p + Eigen::Vector2d(dx, 0.0));
-        for (int k = 1; k < 6; ++k) edges.emplace_back(base, base + k);
-    }
-    const Transform2D turn{4.0, -3.0, 20.0};  // ground truth -> map
-    std::vector<Eigen::Vector2d> moved;
-    for (const auto& p : at) moved.push_back(turn.apply(p));
-    moved[5] += Eigen::Rotation2Dd(20.0 * kDeg) * Eigen::Vector2d(0.0, 1.0);
-    const TopologyGraph g = handGraph(at, edges), m = handGraph(moved, edges);
-    GraphMatch match;
-    for (int i = 0; i < 12; ++i) match.pairs.push_back({i, i, MatchStage::Isomorphism, 1.0, 0});
-    match.isomorphism = 12;
-    match.isomorphism_sizes = {6, 6};
+    const auto [g, m, match] = turnedStarsWithAWrongPair({0.0, 30.0});
     const QualityReport r = evaluateMatch(g, m, match, QualityParameters{});
     EXPECT_EQ(r.brokenness.degree, 0);
     ASSERT_EQ(r.brokenness.groups.size(), 1u);
