@@ -57,7 +57,9 @@ public:
     /** Removes dead-end edges, with their dead-end vertex, that are shorter than `max_length`,
      * or whose chord is shorter than `corner_ratio` times the clearance they lose from junction
      * to end, or (when shorter than `disc_max_chord`) than `disc_ratio` times the junction's
-     * clearance; dissolves degree-2 vertices after each round, until none is left. Returns
+     * clearance; dissolves degree-2 vertices after each round, until none is left. Two phases:
+     * the first two rules alone until a round removes nothing, then all three (the junction
+     * disc judges a dead end by its junction, which a spur about to go may have made). Returns
      * edges removed. */
     std::size_t pruneDeadEnds(double max_length, double corner_ratio, double disc_ratio,
                               double disc_max_chord);
