@@ -706,10 +706,6 @@ TEST(GraphBuilder, ADeadEndStopsWhereItsCorridorEndsNotInACorner)
     EXPECT_NE(vertexNear(tips, 1.75, 2.25), nullptr);
 }
 
-// GraphEditor::fromSkeleton() joins the Voronoi segments' chains without storing each segment:
-// it must give exactly the graph that storing them and dissolveDegreeTwo() gives (vertex order,
-// edge order and direction, paths, clearances), which the build used before. Random skeletons
-// with dead ends, junctions, multi-edges, pure rings and unused nodes.
 TEST(GraphBuilder, AWallWithGapsKeepsItsCorridorsDeadEnd)
 {
     // RTAB-Map's lidar map of the Gazebo office (../shared/data, MIT; same frame as its ground
@@ -741,6 +737,10 @@ TEST(GraphBuilder, AWallWithGapsKeepsItsCorridorsDeadEnd)
         << ")";
 }
 
+// GraphEditor::fromSkeleton() joins the Voronoi segments' chains without storing each segment:
+// it must give exactly the graph that storing them and dissolveDegreeTwo() gives (vertex order,
+// edge order and direction, paths, clearances), which the build used before. Random skeletons
+// with dead ends, junctions, multi-edges, pure rings and unused nodes.
 TEST(GraphBuilder, ChainsFromTheSkeletonEqualStoredSegmentsDissolved)
 {
     using internal::GraphEditor;

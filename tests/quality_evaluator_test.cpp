@@ -176,10 +176,7 @@ TopologyGraph handGraph(const std::vector<Eigen::Vector2d>& at,
     }
     return g;
 }
-}  // namespace
 
-namespace
-{
 /** Stars of a junction with four rooms 2.5 m round it and a corridor's dead end 15 m away, one
  * per offset along x (graph pieces of their own); the map is the ground truth turned by 20
  * degrees, but the first star's dead end sits 1 m across its corridor from where the turn puts

@@ -53,18 +53,19 @@ std::string iniText(const Parameters& params)
     return ini.getContent();
 }
 
-LoadedMap loadMapTimed(const std::string& path, const MapLoadOptions& opts, double& ms)
+LoadedMap loadMapWarning(const std::string& path, const MapLoadOptions& opts)
 {
-    const auto t0 = Clock::now();
     LoadedMap m = loadMap(path, opts);
-    ms = msSince(t0);
-    printLoadNotes(m);
+    for (const auto& note : m.notes) printWarning(m.file + ": " + note);
     return m;
 }
 
-void printLoadNotes(const LoadedMap& m)
+LoadedMap loadMapTimed(const std::string& path, const MapLoadOptions& opts, double& ms)
 {
-    for (const auto& note : m.notes) printWarning(m.file + ": " + note);
+    const auto t0 = Clock::now();
+    LoadedMap m = loadMapWarning(path, opts);
+    ms = msSince(t0);
+    return m;
 }
 
 std::vector<std::pair<std::string, double>> orderedTimings(const std::map<std::string, double>& t,

@@ -38,13 +38,12 @@ bool endsWithHtml(const std::string& path);
 /** The parameters as the INI text `topoeval config --write` would give for them. */
 std::string iniText(const Parameters& params);
 
-/** Loads a map, storing the time it took in `ms`, and prints its notes (printLoadNotes).
- * \throws InputError */
-LoadedMap loadMapTimed(const std::string& path, const MapLoadOptions& opts, double& ms);
+/** Loads a map as every verb does: its notes (LoadedMap::notes: where it was read otherwise
+ * than literally) are printed as warnings naming its file. \throws InputError */
+LoadedMap loadMapWarning(const std::string& path, const MapLoadOptions& opts);
 
-/** Prints each of a loaded map's notes (LoadedMap::notes: where it was read otherwise than
- * literally) as a warning naming its file. */
-void printLoadNotes(const LoadedMap& m);
+/** loadMapWarning(), storing the time it took in `ms`. \throws InputError */
+LoadedMap loadMapTimed(const std::string& path, const MapLoadOptions& opts, double& ms);
 
 /** The steps of `t` in the order `order` lists them, then the others alphabetically, so a new
  * step still shows up. */

@@ -83,8 +83,7 @@ int verbRank(int argc, char** argv)
 
     // The ground truth and its graph once, shared read-only by every evaluation: nothing to
     // rank without it.
-    const LoadedMap gt = loadMap(gt_path, params.map_load);
-    printLoadNotes(gt);
+    const LoadedMap gt = loadMapWarning(gt_path, params.map_load);
     const TopologyGraph gt_graph = buildTopologyGraph(gt.grid, params.graph);
 
     std::size_t workers = 0;

@@ -179,8 +179,7 @@ int verbRawlog(int argc, char** argv)
     if (!html_path.empty()) checkOutputPath(html_path, force, inputs);
     std::error_code ec;  // the non-throwing overload: a bad name is bad input, not a crash
     if (!fs::exists(rawlog_path, ec)) throw InputError(rawlog_path + ": no such file");
-    const LoadedMap gt = loadMap(gt_path, params.map_load);
-    printLoadNotes(gt);
+    const LoadedMap gt = loadMapWarning(gt_path, params.map_load);
 
     RawlogScorerOptions opts;
     opts.every_scans = every_arg.getValue();

@@ -155,12 +155,11 @@ int verbSeries(int argc, char** argv)
     opts.checkJsonImage();
     const std::string html_path = opts.html();
     if (!html_path.empty()) checkOutputPath(html_path, force, inputs);
-    const LoadedMap gt = loadMap(gt_path, params.map_load);
-    printLoadNotes(gt);
+    const LoadedMap gt = loadMapWarning(gt_path, params.map_load);
     // Every map is read once before the output folder is created, so that a bad one anywhere
     // in the list is bad input with nothing written. Reading is a small part of a map's
     // scoring (the graphs are most of it); the maps are not kept, to hold one at a time.
-    for (const auto& m : maps) printLoadNotes(loadMap(m, params.map_load));
+    for (const auto& m : maps) loadMapWarning(m, params.map_load);
     const TopologyGraph gt_graph = buildTopologyGraph(gt.grid, params.graph);
 
     // From here on: if the run fails before its first row, `folder` and `csv` remove what they

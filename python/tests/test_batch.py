@@ -86,13 +86,13 @@ class Cluster:
         # empty file once made this fixture fail under a loaded machine, session 19).
         deadline = time.time() + 60
         info = None
-        while info is None and time.time() < deadline:
+        while info is None and time.time() < deadline and self.scheduler.poll() is None:
             try:
                 with open(sched_file) as f:
                     info = json.load(f)
             except (OSError, ValueError):
                 time.sleep(0.1)
-        assert info is not None, f"no scheduler file {sched_file} within 60 s"
+        assert info is not None, f"no scheduler file {sched_file} (scheduler log beside it)"
         self.address = info["address"]
         assert self.address.startswith("tcp://127.0.0.1:")
         self.workers = [self.start(dask_command("worker") + [

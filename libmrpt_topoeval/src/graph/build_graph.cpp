@@ -102,14 +102,14 @@ TileClasses tileClasses(const std::vector<std::uint8_t>& cls, int sx, int sy)
     return t;
 }
 
-/** The closing of `mask` (the whole grid's, taken before any tile changes) with a disc of r
+/** The closing of `mask` (the grid `cls`'s, taken before any tile changes) with a disc of r
  * cells, handed to `apply(tile, closed)` for each tile that holds a class of `changeable` and
  * sees a class of `source` within the margin (bit masks as in TileClasses). */
 template <class Apply>
-void closeByTiles(const cv::Mat& mask, int r, const TileClasses& t, unsigned changeable,
-                  unsigned source, Apply apply)
+void closeByTiles(const std::vector<std::uint8_t>& cls, const cv::Mat& mask, int r,
+                  unsigned changeable, unsigned source, Apply apply)
 {
-    const int margin = 2 * r, reach = (margin + kTile - 1) / kTile;
+    const int margin = 2 * r;
     const cv::Rect grid(0, 0, mask.cols, mask.rows);
     if (margin > kTile / 16)
     {
@@ -118,13 +118,15 @@ void closeByTiles(const cv::Mat& mask, int r, const TileClasses& t, unsigned cha
         apply(grid, closedWithDisc(mask, r));
         return;
     }
+    const TileClasses t = tileClasses(cls, mask.cols, mask.rows);
     for (int j = 0; j < t.ty; ++j)
         for (int i = 0; i < t.tx; ++i)
         {
             if (!(t.bits[static_cast<std::size_t>(j) * t.tx + i] & changeable)) continue;
+            // The margin (at most kTile / 16 cells) reaches the eight neighbouring tiles.
             bool seen = false;
-            for (int jj = std::max(0, j - reach); jj <= std::min(t.ty - 1, j + reach); ++jj)
-                for (int ii = std::max(0, i - reach); ii <= std::min(t.tx - 1, i + reach); ++ii)
+            for (int jj = std::max(0, j - 1); jj <= std::min(t.ty - 1, j + 1); ++jj)
+                for (int ii = std::max(0, i - 1); ii <= std::min(t.tx - 1, i + 1); ++ii)
                     seen |= (t.bits[static_cast<std::size_t>(jj) * t.tx + ii] & source) != 0;
             if (!seen) continue;
             const cv::Rect tile(i * kTile, j * kTile, std::min(kTile, mask.cols - i * kTile),
@@ -145,7 +147,7 @@ void fillUnknownSpecks(std::vector<std::uint8_t>& cls, int sx, int sy, double ra
     const int r = static_cast<int>(std::lround(radius_cells));
     if (r < 1 || cls.empty()) return;
     cv::Mat c(sy, sx, CV_8UC1, cls.data());
-    closeByTiles(c == kFree, r, tileClasses(cls, sx, sy), 1u << kUnknown, 1u << kFree,
+    closeByTiles(cls, c == kFree, r, 1u << kUnknown, 1u << kFree,
                  [&](const cv::Rect& tile, const cv::Mat& closed)
                  {
                      cv::Mat out = c(tile);
@@ -161,8 +163,7 @@ void closeObstacleGaps(std::vector<std::uint8_t>& cls, int sx, int sy, double ra
     const int r = static_cast<int>(std::lround(radius_cells));
     if (r < 1 || cls.empty()) return;
     cv::Mat c(sy, sx, CV_8UC1, cls.data());
-    closeByTiles(c == kOccupied, r, tileClasses(cls, sx, sy), (1u << kUnknown) | (1u << kFree),
-                 1u << kOccupied,
+    closeByTiles(cls, c == kOccupied, r, (1u << kUnknown) | (1u << kFree), 1u << kOccupied,
                  [&](const cv::Rect& tile, const cv::Mat& closed)
                  { c(tile).setTo(kOccupied, closed); });
 }

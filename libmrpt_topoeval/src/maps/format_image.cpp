@@ -241,10 +241,13 @@ std::vector<std::string> imageToGrid(const std::string& image_path,
     std::vector<CellType> lut(n_sums);
     const double denom = static_cast<double>(used) * white;
     PixelRule rule = rule_in;
-    // Which channel sums the image holds (one pass, only when a rule below asks).
-    auto sumsPresent = [&]
+    // Which channel sums the image holds: one pass over the image, on first use only (both
+    // rules below ask for it).
+    std::vector<char> seen;
+    auto sumsPresent = [&]() -> const std::vector<char>&
     {
-        std::vector<char> seen(n_sums, 0);
+        if (!seen.empty()) return seen;
+        seen.assign(n_sums, 0);
         for (int y = 0; y < img.rows; ++y)
             for (int x = 0; x < img.cols; ++x)
             {
@@ -262,14 +265,14 @@ std::vector<std::string> imageToGrid(const std::string& image_path,
     if (rule.detect_probabilistic && rule.mode == PixelMode::Trinary)
     {
         // Distinct channel sums whose probability lies between the thresholds.
-        const std::vector<char> seen = sumsPresent();
+        const std::vector<char>& present = sumsPresent();
         std::size_t between = 0;
         PixelRule scale = rule;
         scale.mode = PixelMode::Scale;
         for (std::size_t s = 0; s < n_sums; ++s)
         {
             const double p = pixelToPFree(static_cast<double>(s) / denom, scale);
-            between += seen[s] && p != 0.0 && p != 1.0;
+            between += present[s] && p != 0.0 && p != 1.0;
         }
         if (between > kProbabilisticGreyLevels) rule.mode = PixelMode::Scale;
     }
@@ -278,38 +281,31 @@ std::vector<std::string> imageToGrid(const std::string& image_path,
             static_cast<float>(pixelToPFree(static_cast<double>(s) / denom, rule)));
 
     // ROS map_saver's unknown grey that the YAML's free_thresh makes free (nav2 Humble wrote
-    // free_thresh 0.25): in an image of map_saver's greys only it is unknown, not free.
+    // free_thresh 0.25): in an 8-bit grey image of map_saver's greys only (0, g, 254, 255) it
+    // is unknown, not free. The sums are the greys themselves (one channel).
     std::vector<std::string> notes;
     const int g = rule.map_saver_unknown_grey;
     if (rule.mode == PixelMode::Trinary && g >= 0 && g <= 254 && !rule.negate && used == 1 &&
-        img.depth() == CV_8U && white == 255)
+        img.depth() == CV_8U && white == 255 &&
+        pixelToPFree(static_cast<double>(g) / denom, rule) == 1.0 && sumsPresent()[g])
     {
-        const std::size_t unknown_sum = static_cast<std::size_t>(used) * g;
-        if (pixelToPFree(static_cast<double>(unknown_sum) / denom, rule) == 1.0)
+        const std::vector<char>& present = sumsPresent();
+        bool saver_greys_only = true;
+        for (int s = 0; s < static_cast<int>(n_sums) && saver_greys_only; ++s)
+            saver_greys_only = !present[s] || s == 0 || s == g || s == 254 || s == 255;
+        const std::string grey =
+            "grey " + std::to_string(g) + " (ROS map_saver's unknown) read as ";
+        if (saver_greys_only)
         {
-            const std::vector<char> seen = sumsPresent();
-            bool saver_greys_only = seen[unknown_sum] != 0;
-            for (std::size_t s = 0; s < n_sums && saver_greys_only; ++s)
-                saver_greys_only = !seen[s] || s == 0 || s == unknown_sum ||
-                                   s == static_cast<std::size_t>(used) * 254 ||
-                                   s == static_cast<std::size_t>(used) * 255;
-            if (!saver_greys_only && seen[unknown_sum])
-                notes.push_back("grey " + std::to_string(g) +
-                                " (ROS map_saver's unknown) read as free, as free_thresh " +
-                                num(rule.free_thresh) +
-                                " says: the image holds other greys than map_saver's, so it "
-                                "was not written by map_saver");
-            if (saver_greys_only)
-            {
-                lut[unknown_sum] = COccupancyGridMap2D::p2l(0.5f);
-                notes.push_back("grey " + std::to_string(g) +
-                                " (ROS map_saver's unknown) read as unknown, not free as "
-                                "free_thresh " +
-                                num(rule.free_thresh) +
-                                " says (as nav2 Humble's map_saver wrote it; [MapLoad] "
-                                "trinary_unknown_grey = -1 keeps it free)");
-            }
+            lut[static_cast<std::size_t>(g)] = COccupancyGridMap2D::p2l(0.5f);
+            notes.push_back(grey + "unknown, not free as free_thresh " + num(rule.free_thresh) +
+                            " says (as nav2 Humble's map_saver wrote it; [MapLoad] "
+                            "trinary_unknown_grey = -1 keeps it free)");
         }
+        else
+            notes.push_back(grey + "free, as free_thresh " + num(rule.free_thresh) +
+                            " says: the image holds other greys than map_saver's, so it was not "
+                            "written by map_saver");
     }
 
     allocateGrid(grid, hdr.width, hdr.height, res, x0, y0, prefix);
