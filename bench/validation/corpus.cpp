@@ -16,6 +16,18 @@ namespace mrpt_topoeval::validation
 {
 namespace
 {
+/** Whether the real pair NAME becomes a case: quick, only four small ones, one of each kind of
+ * truth but keypoints; and its id must contain `only`. */
+bool realPairWanted(const CorpusOptions& opts, const std::string& name)
+{
+    static const std::vector<std::string> quick_pairs = {
+        "gh25_vs_icp_slam", "house_6ccdcaa_vs_2333d24", "gazebo_gmapping",
+        "floorplan_office_a_furnished"};
+    if (opts.quick && std::find(quick_pairs.begin(), quick_pairs.end(), name) == quick_pairs.end())
+        return false;
+    return opts.only.empty() || ("real/" + name).find(opts.only) != std::string::npos;
+}
+
 /** A seed per (corpus seed, ground truth, variant): stable when cases are added elsewhere. */
 std::uint32_t caseSeed(std::uint32_t seed, const std::string& id)
 {
@@ -115,7 +127,9 @@ Corpus buildCorpus(const CorpusOptions& opts)
                 g.grid = std::move(rb.grid);
                 corpus.ground_truths.push_back(std::move(g));
             }
-        corpus.real_pairs = loadRealPairs(opts.data_dir, &skipped);
+        corpus.real_pairs =
+            loadRealPairs(opts.data_dir, &skipped,
+                          [&](const std::string& name) { return realPairWanted(opts, name); });
         for (const auto& s : skipped) corpus.notes.push_back("skipped: " + s);
     }
 
@@ -168,16 +182,10 @@ Corpus buildCorpus(const CorpusOptions& opts)
             corpus.cases.push_back(c);
         }
     }
-    // Real pairs (quick: four small ones, one of each kind of truth but keypoints).
-    const std::vector<std::string> quick_pairs = {"gh25_vs_icp_slam", "house_6ccdcaa_vs_2333d24",
-                                                  "gazebo_gmapping",
-                                                  "floorplan_office_a_furnished"};
     for (std::size_t p = 0; p < corpus.real_pairs.size(); ++p)
     {
         const RealPair& rp = corpus.real_pairs[p];
-        if (opts.quick &&
-            std::find(quick_pairs.begin(), quick_pairs.end(), rp.name) == quick_pairs.end())
-            continue;
+        if (opts.quick && !realPairWanted(opts, rp.name)) continue;
         CaseSpec c;
         c.id = "real/" + rp.name;
         c.building = rp.name;

@@ -49,6 +49,7 @@ struct CorpusOptions
     std::uint32_t seed = 1;  //!< Everything random derives from it.
     std::string data_dir;    //!< ../shared/data; empty or absent = generated only.
     bool real = true;        //!< Use the real data when present.
+    std::string only;        //!< Case ids must contain it (real pairs made at run time).
 };
 
 struct Corpus

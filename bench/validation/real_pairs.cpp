@@ -12,6 +12,7 @@
 #include <mrpt/poses/CPosePDF.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/slam/CICP.h>
+#include <mrpt_topoeval/RawlogScorer.h>
 #include <mrpt_topoeval/map_io.h>
 
 #include <algorithm>
@@ -30,7 +31,9 @@
 // - Halmstad: a fit to hand-labelled keypoints;
 // - Intel: the SLAM keyframes' estimated poses against their true poses, which come from the
 //   corrected log where the keyframe's scan is in it, else from odometry seeded ICP of the scan
-//   against the reference map.
+//   against the reference map;
+// - Radish logs with corrected poses: topoeval's own ICP-SLAM (`topoeval rawlog`) maps the log,
+//   and each keyframe's true pose is the corrected pose of its scan.
 // Every truth is checked against the ground truth's walls (checkTruth) and the numbers are
 // written into Truth::source, so a reader of the corpus sees how good each truth is.
 
@@ -1015,6 +1018,93 @@ void intelPairs(const fs::path& data, std::vector<RealPair>& out, std::vector<st
          "of that run are stored, so no per-keyframe truth; a sheared map has no single "
          "transform");
 }
+
+// ---------------------------------------------------------------------------------------------
+// Radish logs mapped by topoeval's ICP-SLAM: per-keyframe truth from the corrected poses.
+
+/** The Radish logs whose odometry is the corrected trajectory (data README), mapped by the
+ * ICP-SLAM of `topoeval rawlog` with its default configuration: real scans and a real SLAM
+ * system's errors, drawn from poses that start right and drift only by scan matching. The
+ * reference maps are drawn from the same corrected poses, in their frame. Each keyframe's scan
+ * is a scan of the log (found by its ranges), whose odometry is its true pose; a map point is
+ * placed by the keyframes whose scans drew the obstacles nearest to it, as for Intel. The
+ * maps are made when the validator runs (a few seconds each), so only when `wanted`. */
+void radishSlamPairs(const fs::path& data, std::vector<RealPair>& out,
+                     const std::function<bool(const std::string&)>& wanted,
+                     std::vector<std::string>* skipped)
+{
+    for (const std::string log_name : {"aces", "csail", "freiburg-101", "intel"})
+    {
+        std::string name = log_name + "_rawlog_icp_slam";
+        name.erase(std::remove(name.begin(), name.end(), '-'), name.end());
+        if (wanted && !wanted(name)) continue;
+        try
+        {
+            const fs::path ref_file = data / "radish" / (log_name + "-corrected_ref.yaml");
+            const fs::path log_file = data / "rawlogs" / (log_name + "-corrected.rawlog");
+            RealPair p;
+            p.name = name;
+            p.family = "radish";
+            p.gt_file = ref_file.string();
+            p.map_file = log_file.string() + " (ICP-SLAM, topoeval rawlog's default configuration)";
+            p.gt = loadGrid(ref_file);
+            RawlogScorerOptions o;
+            o.every_scans = std::numeric_limits<std::size_t>::max();  // the final map only
+            RawlogScoreResult res = RawlogScorer(o, Parameters()).run(log_file.string(), p.gt);
+            p.map = std::move(res.final_grid);
+            const std::vector<RawScan> scans = readScans(log_file);
+            std::vector<CPose2D> est, truth;
+            std::vector<Points> local;
+            int hint = 0, missing = 0;
+            for (std::size_t k = 0; k < res.final_keyframes.size(); ++k)
+            {
+                const auto& [pdf, sf] = res.final_keyframes.get(k);
+                const auto scan = sf->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+                const int r = scan ? findScan(scans, *scan, hint) : -1;
+                if (r < 0)
+                {
+                    ++missing;
+                    continue;
+                }
+                hint = r;
+                est.push_back(CPose2D(pdf->getMeanVal()));
+                truth.push_back(scans[r].odometry);
+                mrpt::maps::CSimplePointsMap pts;
+                pts.insertObservation(*scan);
+                Points l;
+                for (std::size_t i = 0; i < pts.size(); ++i)
+                {
+                    float x = 0, y = 0;
+                    pts.getPoint(i, x, y);
+                    l.emplace_back(x, y);
+                }
+                local.push_back(std::move(l));
+            }
+            if (est.empty()) throw std::runtime_error("no keyframe's scan found in the log");
+            const std::size_t n = est.size();
+            KeyframeMappings km = keyframeMapping(std::move(est), std::move(truth), local, p.map);
+            p.truth.mapping = std::move(km.point);
+            p.truth.vertex_places =
+                [vertex = std::move(km.vertex)](const Eigen::Vector2d& q, double clearance_m)
+            {
+                std::vector<std::pair<int, Eigen::Vector2d>> places;
+                if (const auto at = vertex(q, clearance_m)) places.emplace_back(-1, *at);
+                return places;
+            };
+            p.truth.source =
+                "keyframe poses: " + std::to_string(n) + " ICP-SLAM keyframes of " +
+                std::to_string(res.stats.scans) +
+                " scans (per point, the ones whose scans drew the obstacles nearest "
+                "to it), each true pose the corrected pose of its scan" +
+                (missing ? "; " + std::to_string(missing) + " keyframes not found" : std::string());
+            out.push_back(std::move(p));
+        }
+        catch (const std::exception& e)
+        {
+            note(skipped, name + ": " + e.what());
+        }
+    }
+}
 }  // namespace
 
 std::vector<RealBuilding> loadRealBuildings(const std::string& data_dir,
@@ -1047,7 +1137,8 @@ std::vector<RealBuilding> loadRealBuildings(const std::string& data_dir,
     return out;
 }
 
-std::vector<RealPair> loadRealPairs(const std::string& data_dir, std::vector<std::string>* skipped)
+std::vector<RealPair> loadRealPairs(const std::string& data_dir, std::vector<std::string>* skipped,
+                                    const std::function<bool(const std::string&)>& wanted)
 {
     std::vector<RealPair> out;
     const fs::path data(data_dir);
@@ -1070,6 +1161,7 @@ std::vector<RealPair> loadRealPairs(const std::string& data_dir, std::vector<std
     family("floorplan", [&] { floorplanPairs(data, out, skipped); });
     family("halmstad", [&] { halmstadPairs(data, out, skipped); });
     family("intel", [&] { intelPairs(data, out, skipped); });
+    radishSlamPairs(data, out, wanted, skipped);
     for (RealPair& p : out)
         if (p.family != "gazebo") appendCheck(p);
     note(skipped,

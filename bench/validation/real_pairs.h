@@ -6,6 +6,7 @@
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,10 @@ struct RealPair
 std::vector<RealBuilding> loadRealBuildings(const std::string& data_dir,
                                             std::vector<std::string>* skipped = nullptr);
 
-/** Every real pair of `data_dir` whose truth can be established; empty if absent. */
-std::vector<RealPair> loadRealPairs(const std::string& data_dir,
-                                    std::vector<std::string>* skipped = nullptr);
+/** Every real pair of `data_dir` whose truth can be established; empty if absent. A pair whose
+ * map is made at run time (ICP-SLAM of a rawlog, seconds each) only when `wanted(NAME)` (none:
+ * all). */
+std::vector<RealPair> loadRealPairs(
+    const std::string& data_dir, std::vector<std::string>* skipped = nullptr,
+    const std::function<bool(const std::string&)>& wanted = nullptr);
 }  // namespace mrpt_topoeval::validation

@@ -102,7 +102,7 @@ Options parse(int argc, char** argv)
         else if (a == "--floors")
             o.floors = need(i);
         else if (a == "--only")
-            o.only = need(i);
+            o.only = o.corpus.only = need(i);
         else if (a == "--force")
             o.force = true;
         else if (a == "--draw-ground-truths")

@@ -622,6 +622,7 @@ RawlogScoreResult RawlogScorer::run(const std::string& rawlog_path,
     res.stop_entry = reader.entries();
     if (res.stats.scans == 0) throw noScan(rawlog_path, res.stats.entries, res.stop_message);
     if (run.snapshotDue()) run.snapshot();
+    run.builder.getCurrentlyBuiltMap(res.final_keyframes);
     if (run.slamRejections() > 1)
         res.messages.push_back(std::to_string(run.slamRejections()) +
                                " readings were rejected by ICP-SLAM in total");

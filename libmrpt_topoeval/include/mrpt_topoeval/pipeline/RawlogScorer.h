@@ -8,6 +8,7 @@
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/maps/CSimpleMap.h>
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/QualityReport.h>
 #include <mrpt_topoeval/TopologyGraph.h>
@@ -107,6 +108,11 @@ struct RawlogScoreResult
     mrpt::maps::COccupancyGridMap2D final_grid;
     QualityReport final_report;
     TopologyGraph final_gt_graph, final_map_graph;
+    /** The ICP-SLAM keyframes at the end, as MRPT's `icp-slam` saves them (`.simplemap`): each
+     * the robot pose SLAM estimated and the sensory frame inserted there. The final grid was
+     * drawn from them; with the true poses of their scans they give a per-point truth of the
+     * map (bench/validation: the Radish logs' corrected poses). */
+    mrpt::maps::CSimpleMap final_keyframes;
     std::string effective_slam_ini;     //!< The SLAM configuration actually used, as INI text.
     std::vector<std::string> messages;  //!< Notes on the configuration and the data.
     double slam_ms = 0.0;               //!< Time in reading and ICP-SLAM [ms].
