@@ -433,6 +433,34 @@ KeyframeMappings keyframeMapping(std::vector<CPose2D> est, std::vector<CPose2D> 
     return out;
 }
 
+/** Sets `pair`'s truth to the keyframes' (keyframeMapping) on its map. */
+void setKeyframeTruth(RealPair& pair, std::vector<CPose2D> est, std::vector<CPose2D> truth,
+                      const std::vector<Points>& scans_local)
+{
+    KeyframeMappings km = keyframeMapping(std::move(est), std::move(truth), scans_local, pair.map);
+    pair.truth.mapping = std::move(km.point);
+    pair.truth.vertex_places =
+        [vertex = std::move(km.vertex)](const Eigen::Vector2d& q, double clearance_m)
+    {
+        std::vector<std::pair<int, Eigen::Vector2d>> places;
+        if (const auto at = vertex(q, clearance_m)) places.emplace_back(-1, *at);
+        return places;
+    };
+}
+
+/** A scan's endpoints in the robot's frame. */
+Points scanEndpoints(const mrpt::maps::CSimplePointsMap& pts)
+{
+    Points local;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+    {
+        float x = 0, y = 0;
+        pts.getPoint(i, x, y);
+        local.emplace_back(x, y);
+    }
+    return local;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Small readers.
 
@@ -970,14 +998,7 @@ KeyframeTruth intelKeyframeTruth(const fs::path& data, const fs::path& simplemap
         }
         kt.est.push_back(CPose2D(pdf->getMeanVal()));
         kt.truth.push_back(truth);
-        Points local;
-        for (std::size_t i = 0; i < pts.size(); ++i)
-        {
-            float x = 0, y = 0;
-            pts.getPoint(i, x, y);
-            local.emplace_back(x, y);
-        }
-        kt.scans.push_back(std::move(local));
+        kt.scans.push_back(scanEndpoints(pts));
     }
     return kt;
 }
@@ -996,15 +1017,7 @@ void intelPairs(const fs::path& data, std::vector<RealPair>& out, std::vector<st
     p.map = loadGrid(map_file);
     KeyframeTruth kt = intelKeyframeTruth(data, sm_file, p.gt);
     const std::size_t n = kt.est.size();
-    KeyframeMappings km = keyframeMapping(std::move(kt.est), std::move(kt.truth), kt.scans, p.map);
-    p.truth.mapping = std::move(km.point);
-    p.truth.vertex_places =
-        [vertex = std::move(km.vertex)](const Eigen::Vector2d& q, double clearance_m)
-    {
-        std::vector<std::pair<int, Eigen::Vector2d>> places;
-        if (const auto at = vertex(q, clearance_m)) places.emplace_back(-1, *at);
-        return places;
-    };
+    setKeyframeTruth(p, std::move(kt.est), std::move(kt.truth), kt.scans);
     p.truth.source = "keyframe poses: " + std::to_string(n) +
                      " SLAM keyframes (per point, the ones whose scans drew the obstacles nearest "
                      "to it); true pose from the corrected log for " +
@@ -1071,26 +1084,11 @@ void radishSlamPairs(const fs::path& data, std::vector<RealPair>& out,
                 truth.push_back(scans[r].odometry);
                 mrpt::maps::CSimplePointsMap pts;
                 pts.insertObservation(*scan);
-                Points l;
-                for (std::size_t i = 0; i < pts.size(); ++i)
-                {
-                    float x = 0, y = 0;
-                    pts.getPoint(i, x, y);
-                    l.emplace_back(x, y);
-                }
-                local.push_back(std::move(l));
+                local.push_back(scanEndpoints(pts));
             }
             if (est.empty()) throw std::runtime_error("no keyframe's scan found in the log");
             const std::size_t n = est.size();
-            KeyframeMappings km = keyframeMapping(std::move(est), std::move(truth), local, p.map);
-            p.truth.mapping = std::move(km.point);
-            p.truth.vertex_places =
-                [vertex = std::move(km.vertex)](const Eigen::Vector2d& q, double clearance_m)
-            {
-                std::vector<std::pair<int, Eigen::Vector2d>> places;
-                if (const auto at = vertex(q, clearance_m)) places.emplace_back(-1, *at);
-                return places;
-            };
+            setKeyframeTruth(p, std::move(est), std::move(truth), local);
             p.truth.source =
                 "keyframe poses: " + std::to_string(n) + " ICP-SLAM keyframes of " +
                 std::to_string(res.stats.scans) +
