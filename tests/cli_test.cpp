@@ -4,6 +4,7 @@
 // steps, the bad-input corpus.
 
 #include <gtest/gtest.h>
+#include <mrpt/maps/CSimpleMap.h>
 #include <mrpt_topoeval/Parameters.h>
 #include <sys/wait.h>
 
@@ -957,8 +958,8 @@ TEST_F(Cli, RawlogEndToEndWritesEveryOutputAndNeverOverwrites)
     const RunResult r = run("rawlog " + q(s.rawlog) + " --ground-truth " + q(s.gt) +
                             " --every 100 --out " + q(out));
     ASSERT_EQ(r.code, 0) << r.err;
-    for (const char* f :
-         {"scores.csv", "report.json", "scores.png", "final.gridmap.gz", "final.png"})
+    for (const char* f : {"scores.csv", "report.json", "scores.png", "final.gridmap.gz",
+                          "final.simplemap", "final.png"})
         EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
     const std::vector<std::string> lines = splitOn(readText(out + "/scores.csv"), '\n');
     ASSERT_GE(lines.size(), 4u);
@@ -973,6 +974,13 @@ TEST_F(Cli, RawlogEndToEndWritesEveryOutputAndNeverOverwrites)
     // The final map reads back as a map.
     const RunResult g = run("graph " + q(out + "/final.gridmap.gz"));
     EXPECT_EQ(g.code, 0) << g.err;
+    // The keyframes read back as MRPT's simplemap (rendered into a grid by every verb).
+    mrpt::maps::CSimpleMap keyframes;
+    ASSERT_TRUE(keyframes.loadFromFile(out + "/final.simplemap"));
+    EXPECT_GE(keyframes.size(), 10u);
+    EXPECT_LT(keyframes.size(), 349u);
+    const RunResult k = run("graph " + q(out + "/final.simplemap"));
+    EXPECT_EQ(k.code, 0) << k.err;
 
     // Outputs are never replaced without --force.
     const RunResult again = run("rawlog " + q(s.rawlog) + " -g " + q(s.gt) + " -o " + q(out));
@@ -996,8 +1004,8 @@ TEST_F(Cli, RawlogTruncatedStopsWithExit4AndWritesThePartDone)
     const RunResult r = run("rawlog " + q(cut) + " -g " + q(s.gt) + " -o " + q(dir + "/out"));
     EXPECT_EQ(r.code, 4) << r.err;
     EXPECT_TRUE(contains(r.err, "stopped at entry")) << r.err;
-    for (const char* f :
-         {"scores.csv", "report.json", "scores.png", "final.gridmap.gz", "final.png"})
+    for (const char* f : {"scores.csv", "report.json", "scores.png", "final.gridmap.gz",
+                          "final.simplemap", "final.png"})
         EXPECT_TRUE(fs::exists(dir + "/out/" + f)) << f;
     EXPECT_TRUE(contains(readText(dir + "/out/report.json"), "\"stop\": \"truncated\""));
 }

@@ -80,17 +80,23 @@ void OutputFolder::create(const std::string& path)
     }
 }
 
-void writeGridMapGz(const std::string& path, const mrpt::maps::COccupancyGridMap2D& grid,
-                    bool overwrite)
+void writeSerializedGz(const std::string& path, const mrpt::serialization::CSerializable& object,
+                       bool overwrite)
 {
     mrpt::io::CMemoryStream mem;
-    mrpt::serialization::archiveFrom(mem) << grid;
+    mrpt::serialization::archiveFrom(mem) << object;
     const auto* p = static_cast<const std::uint8_t*>(mem.getRawBufferData());
     const std::vector<std::uint8_t> raw(p, p + mem.getTotalBytesCount());
     std::vector<std::uint8_t> gz;
     if (!mrpt::io::zip::compress_gz_data_block(raw, gz, 6))
         throw OutputError(path + ": gzip compression failed");
     writeFileAtomic(path, std::string(gz.begin(), gz.end()), overwrite);
+}
+
+void writeGridMapGz(const std::string& path, const mrpt::maps::COccupancyGridMap2D& grid,
+                    bool overwrite)
+{
+    writeSerializedGz(path, grid, overwrite);
 }
 
 void writeGridPng(const std::string& path, const mrpt::maps::COccupancyGridMap2D& grid,

@@ -6,6 +6,7 @@
 // a temporary name (mrpt_topoeval/scores/scores.h), maps as .gridmap.gz.
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/serialization/CSerializable.h>
 #include <mrpt_topoeval/output.h>
 #include <mrpt_topoeval/scores/scores.h>
 
@@ -62,6 +63,12 @@ private:
 void keepPartialRun(OutputFolder& folder, ScoresCsv& csv, const std::string& noun,
                     const std::function<std::string(const std::string& error)>& report_json,
                     bool force);
+
+/** Writes an MRPT serialized object, gz-compressed (as MRPT's `.gridmap.gz` and `.simplemap`
+ * files are), through a temporary name.
+ * \throws OutputError */
+void writeSerializedGz(const std::string& path, const mrpt::serialization::CSerializable& object,
+                       bool overwrite);
 
 /** Writes an MRPT serialized grid, gz-compressed, through a temporary name.
  * \throws OutputError */

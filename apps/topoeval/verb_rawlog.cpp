@@ -95,8 +95,8 @@ private:
 /** The files of DIR, checked before the run; `scores.csv.part` holds the rows of a run that
  * was killed, which are results too. */
 const std::vector<std::string> kOutputNames = {"scores.csv", "scores.csv.part",  "report.json",
-                                               "scores.png", "final.gridmap.gz", "final.png",
-                                               "snapshots/"};
+                                               "scores.png", "final.gridmap.gz", "final.simplemap",
+                                               "final.png",  "snapshots/"};
 
 }  // namespace
 
@@ -111,7 +111,8 @@ int verbRawlog(int argc, char** argv)
         "gets its scan's time, equal or decreasing timestamps are made increasing, scans "
         "without odometry and objects ICP-SLAM does not use are counted. Outputs in DIR: "
         "scores.csv (one row per snapshot, written as they come), report.json, scores.png, "
-        "final.gridmap.gz, final.png; with --snapshots each snapshot's map and match picture "
+        "final.gridmap.gz, final.simplemap (ICP-SLAM's keyframes: poses and scans, as "
+        "icp-slam saves them), final.png; with --snapshots each snapshot's map and match picture "
         "in DIR/snapshots/; --html one self-contained web page with the scores over time, each "
         "snapshot's map and match and the final map (doc/report.md). Existing outputs are never "
         "replaced without --force. The rawlog is "
@@ -274,6 +275,8 @@ int verbRawlog(int argc, char** argv)
     written.push_back(out("scores.csv"));
     writeGridMapGz(out("final.gridmap.gz"), res.final_grid, force);
     written.push_back(out("final.gridmap.gz"));
+    writeSerializedGz(out("final.simplemap"), res.final_keyframes, force);
+    written.push_back(out("final.simplemap"));
     writeGridPng(out("final.png"), res.final_grid, force);
     written.push_back(out("final.png"));
     writePngAtomic(out("scores.png"),
