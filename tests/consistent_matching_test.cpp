@@ -741,3 +741,58 @@ TEST(ConsistentMatching, WallsOfASmallPartAgreeAndPinItsFit)
     EXPECT_EQ(no_walls.share, 0.0);
     EXPECT_FALSE(no_walls.walls_on_both);
 }
+
+TEST(ConsistentMatching, AFurnishedHallsRoomsAreMatchedByTheirWalls)
+{
+    // A corridor with offices, a hall north of it and rooms off the hall; in the map the hall
+    // is furnished (desks). The desks make the hall's graph a mesh, so the junctions by the
+    // rooms' doors change and, with them, the attributes of the rooms' dead ends, while the
+    // rooms themselves are the same. Growing without links asks a pair for a small group's
+    // similarity (min_small_group_similarity), or, less similar, for walls around it that agree
+    // under the group's fit and pin it (min_part_wall_agreement, max_wall_pinning; 0 = the
+    // similarity alone). The group is the corridor's; the rooms are 9-10 m from it.
+    auto building = [](bool furnished)
+    {
+        GridSketch s(44.0, 20.0);
+        s.carve(1.0, 5.0, 42.0, 7.0);  // corridor
+        double x = 2.0;
+        for (double w : {5.0, 4.0, 6.0, 5.0, 4.5, 6.5})
+        {
+            s.carve(x, 1.0, x + w, 4.0).carve(x + 1.0, 4.0, x + 2.0, 5.0);
+            x += w + 1.0;
+        }
+        s.carve(1.0, 8.0, 21.0, 13.0).carve(9.0, 7.0, 11.0, 8.0);   // hall and its door
+        s.carve(3.0, 14.0, 8.0, 18.0).carve(5.0, 13.0, 6.0, 14.0);  // rooms off the hall
+        s.carve(10.0, 14.0, 14.0, 18.0).carve(11.0, 13.0, 12.0, 14.0);
+        s.carve(16.0, 14.0, 21.0, 17.0).carve(18.0, 13.0, 19.0, 14.0);
+        s.carve(23.0, 9.0, 30.0, 15.0).carve(25.0, 7.0, 26.0, 9.0);  // offices east
+        s.carve(32.0, 9.0, 41.0, 13.0).carve(35.0, 7.0, 36.0, 9.0);
+        if (furnished)
+            for (auto [x0, y0] :
+                 {std::pair{3.0, 10.0}, {7.0, 11.0}, {12.0, 10.0}, {15.5, 11.2}, {17.5, 9.2}})
+                s.fill(x0, y0, x0 + 1.6, y0 + 0.8);
+        return s.grid();
+    };
+    const COccupancyGridMap2D plain = building(false), furnished = building(true);
+    const Parameters tp = tunedParameters();
+    const TopologyGraph gt = buildTopologyGraph(plain, tp.graph);
+    std::vector<int> rooms;  // the dead ends in the rooms off the hall
+    for (const auto& v : gt.vertices)
+        if (v.position_m.y() > 13.5) rooms.push_back(v.id);
+    ASSERT_EQ(rooms.size(), 3u);
+    GraphMatcherParameters no_walls = tp.matcher;
+    no_walls.min_part_wall_agreement = 0.0;
+    for (const GraphMatcherParameters* mp :
+         std::array<const GraphMatcherParameters*, 2>{&tp.matcher, &no_walls})
+    {
+        const Score sc = scoreGrids(mp == &tp.matcher ? "furnished_hall" : "furnished_hall_nowalls",
+                                    plain, furnished, kIdentity, mp);
+        EXPECT_EQ(sc.correct, sc.matched);
+        int found = 0;
+        for (int a : rooms)
+            found += std::any_of(sc.match.pairs.begin(), sc.match.pairs.end(),
+                                 [&](const VertexPair& p) { return p.ground_truth == a; });
+        // The walls match all three rooms; without them none (their similarity is too low).
+        EXPECT_EQ(found, mp == &tp.matcher ? 3 : 0);
+    }
+}

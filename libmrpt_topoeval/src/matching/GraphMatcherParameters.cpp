@@ -84,8 +84,8 @@ TOPOEVAL_PARAMETER_TABLE(
          "(a small one if its walls agree too)",
          atLeast(0)),
     real(TOPOEVAL_KEY(min_part_wall_agreement), "0..1",
-         "consistent: a small further group less similar needs this share of its walls "
-         "agreeing (0: off)",
+         "consistent: a small further group, or a pair grown without links, less similar "
+         "needs this share of its walls agreeing (0: off)",
          atLeast(0).atMost(1)),
     real(TOPOEVAL_KEY(max_wall_pinning), "ratio",
          "consistent: ... whose fit moved by 2 wall tolerances keeps at most this of it", above(0)),

@@ -699,7 +699,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     //    Then once more without the links (`geometric`): a vertex of a graph piece no group
     //    reaches (a hall's inner piece, cut off by its walls) is paired with any free map vertex
     //    the fit puts within its tolerance, when the pair is as similar as a small group must
-    //    be (min_small_group_similarity). Then along the links again, from what that pass
+    //    be (min_small_group_similarity), or less similar (down to the linked pass's
+    //    similarity) when the walls around it agree under the fit and pin it, as a small
+    //    part's must (a room off a furnished hall: the desks changed its dead end's junction,
+    //    not its walls; doc/matching.md). Then along the links again, from what that pass
     //    placed: the rest of such a piece is linked to it (a room's junction whose edges a
     //    table changed is less similar than a small group's pair, but next to one).
     std::vector<int> group_of_gt(n_gt, -1);
@@ -739,6 +742,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 double score;
                 int gt, map, group;
                 Transform2D fit;  //!< the group's local fit that placed it
+                bool by_walls;    //!< less similar than the pass asks: its walls must confirm
             };
             std::vector<Proposal> proposals;
             for (int a = 0; a < n_gt; ++a)
@@ -796,14 +800,19 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                     {
                         if (!ctx.map.v[b].active || ctx.map_to_gt[b] >= 0 || !degreeOk(a, b))
                             continue;
-                        if (S(a, b) < (geometric ? p.min_small_group_similarity
-                                                 : p.min_consistent_growing_similarity))
-                            continue;
+                        const bool similar =
+                            S(a, b) >= (geometric ? p.min_small_group_similarity
+                                                  : p.min_consistent_growing_similarity);
+                        const bool by_walls = geometric && !similar &&
+                                              p.min_part_wall_agreement > 0.0 &&
+                                              S(a, b) >= p.min_consistent_growing_similarity;
+                        if (!similar && !by_walls) continue;
                         const double tol = p.position_tolerance_m + uncertainty(a, b) +
                                            p.distance_tolerance_ratio * near.front().first;
                         const double err = (T.apply(pm(b)) - pg(a)).norm();
                         if (err > tol) continue;
-                        proposals.push_back({(1.0 - err / tol) + S(a, b), a, b, int(g), T});
+                        proposals.push_back(
+                            {(1.0 - err / tol) + S(a, b), a, b, int(g), T, by_walls});
                     }
                 }
             }
@@ -820,7 +829,18 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             for (const Proposal& pr : proposals)
             {
                 if (ctx.gt_to_map[pr.gt] >= 0 || ctx.map_to_gt[pr.map] >= 0) continue;
-                if (check_walls)
+                if (pr.by_walls)
+                {
+                    if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
+                    if (!map_walls) map_walls.emplace(map.wall_points_m);
+                    const WallAgreement w =
+                        wallAgreement(gt, map, *gt_walls, *map_walls, {{pr.gt, pr.map}}, pr.fit,
+                                      p.wall_margin_m, wall_tolerance, p.min_part_wall_agreement);
+                    if (!w.walls_on_both || w.share < p.min_part_wall_agreement ||
+                        w.pinning > p.max_wall_pinning)
+                        continue;
+                }
+                else if (check_walls)
                 {
                     if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
                     if (!map_walls) map_walls.emplace(map.wall_points_m);

@@ -154,7 +154,10 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * around it agree under its rigid fit: at least this share of the wall points around its
      * vertices lie on the other map's walls, counted from each map, the smaller share taken.
      * 0.6 and 0.7 give the same corpus, 0.5 admits a chance group in a column hall's lattice,
-     * 0.8 finds no part (doc/matching.md); 0 turns the rule off [0..1]. */
+     * 0.8 finds no part (doc/matching.md); 0 turns the rule off [0..1]. The same test lets
+     * growing without links take a pair less similar than min_small_group_similarity (down to
+     * min_consistent_growing_similarity): a room off a furnished hall, whose dead end's
+     * junction the desks changed (doc/matching.md, step 4). */
     double min_part_wall_agreement = 0.7;
     /** ... and when the walls pin the fit: moved by twice the wall tolerance in any of 8
      * directions, the fit keeps at most this share of its agreement. A straight corridor's
