@@ -20,12 +20,10 @@
 
 namespace mrpt_topoeval::internal
 {
-// The ICP of walls (a brokenness group's turn, a pair's place): the wall points within each
-// vertex's clearance + margin_m in both maps (not thinned: ICP wants them all), aligned by MRPT's
-// CICP, classic, from `start` (map -> ground truth). Its first matching distance is the larger
-// of reach_m and the error a part's fit allows (the root of brokenness_max_squared_error_m2),
-// halved down to two cells. None when either map has fewer than 20 wall points there (a bare
-// plan's few walls).
+// The ICP of walls (a brokenness group's turn, a pair's place): alignWallsByIcp() with a first
+// matching distance of the larger of reach_m and the error a part's fit allows (the root of
+// brokenness_max_squared_error_m2). None when either map has fewer than 20 wall points there (a
+// bare plan's few walls).
 std::optional<Transform2D> alignWalls(const TopologyGraph& gt, const TopologyGraph& map,
                                       const WallIndex& gt_walls, const WallIndex& map_walls,
                                       const std::vector<std::pair<int, int>>& pairs,

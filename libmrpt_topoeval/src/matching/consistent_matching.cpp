@@ -741,8 +741,9 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             {
                 double score;
                 int gt, map, group;
-                Transform2D fit;  //!< the group's local fit that placed it
-                bool by_walls;    //!< less similar than the pass asks: its walls must confirm
+                Transform2D fit;   //!< the group's local fit that placed it
+                bool by_walls;     //!< less similar than the pass asks: its walls must confirm
+                double tolerance;  //!< how far from its vertex the fit may put the partner
             };
             std::vector<Proposal> proposals;
             for (int a = 0; a < n_gt; ++a)
@@ -812,7 +813,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                         const double err = (T.apply(pm(b)) - pg(a)).norm();
                         if (err > tol) continue;
                         proposals.push_back(
-                            {(1.0 - err / tol) + S(a, b), a, b, int(g), T, by_walls});
+                            {(1.0 - err / tol) + S(a, b), a, b, int(g), T, by_walls, tol});
                     }
                 }
             }
@@ -831,10 +832,21 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 if (ctx.gt_to_map[pr.gt] >= 0 || ctx.map_to_gt[pr.map] >= 0) continue;
                 if (pr.by_walls)
                 {
+                    // The walls decide: aligned by ICP from the fit (which, made of pairs up to
+                    // growing_radius_m away, may put a room a few decimetres off), they must
+                    // still put the partner within the pair's tolerance, agree and pin.
                     if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
                     if (!map_walls) map_walls.emplace(map.wall_points_m);
+                    const std::vector<std::pair<int, int>> pair{{pr.gt, pr.map}};
+                    const double own = (pg(pr.gt) - pr.fit.apply(pm(pr.map))).norm();
+                    const auto walls_fit =
+                        alignWallsByIcp(gt, map, *gt_walls, *map_walls, pair, p.wall_margin_m,
+                                        pr.fit, std::max(own, wall_tolerance));
+                    if (!walls_fit ||
+                        (pg(pr.gt) - walls_fit->apply(pm(pr.map))).norm() > pr.tolerance)
+                        continue;
                     const WallAgreement w =
-                        wallAgreement(gt, map, *gt_walls, *map_walls, {{pr.gt, pr.map}}, pr.fit,
+                        wallAgreement(gt, map, *gt_walls, *map_walls, pair, *walls_fit,
                                       p.wall_margin_m, wall_tolerance, p.min_part_wall_agreement);
                     if (!w.walls_on_both || w.share < p.min_part_wall_agreement ||
                         w.pinning > p.max_wall_pinning)

@@ -2,6 +2,8 @@
 #include "matching/wall_agreement.h"
 
 #include <mrpt/core/bits_math.h>
+#include <mrpt/poses/CPosePDF.h>
+#include <mrpt/slam/CICP.h>
 
 #include <algorithm>
 #include <cmath>
@@ -101,6 +103,47 @@ WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
     }
     out.pinning = moved / out.share;
     return out;
+}
+
+std::optional<Transform2D> alignWallsByIcp(const TopologyGraph& gt, const TopologyGraph& map,
+                                           const WallIndex& gt_walls, const WallIndex& map_walls,
+                                           const std::vector<std::pair<int, int>>& pairs,
+                                           double margin_m, const Transform2D& start,
+                                           double reach_m)
+{
+    constexpr int kWallIcpIterations = 60;
+    constexpr std::size_t kMinWallPoints = 20;
+    auto cloud = [&](const TopologyGraph& g, const WallIndex& index, bool ground_truth)
+    {
+        std::vector<int> vertices;
+        for (const auto& [a, b] : pairs) vertices.push_back(ground_truth ? a : b);
+        mrpt::maps::CSimplePointsMap c;
+        for (const auto& q : wallsAround(g, index, vertices, margin_m, 0))
+            c.insertPoint(float(q.x()), float(q.y()), 0.0f);
+        return c;
+    };
+    const mrpt::maps::CSimplePointsMap walls_gt = cloud(gt, gt_walls, true),
+                                       walls_map = cloud(map, map_walls, false);
+    if (walls_gt.size() < kMinWallPoints || walls_map.size() < kMinWallPoints) return std::nullopt;
+    const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
+    mrpt::slam::CICP::TConfigParams o;
+    o.ICP_algorithm = mrpt::slam::icpClassic;
+    o.maxIterations = kWallIcpIterations;
+    o.thresholdDist = std::max(3.0 * res, reach_m);
+    o.thresholdAng = 0.0;
+    o.ALFA = 0.5;
+    o.smallestThresholdDist = 2.0 * res;
+    o.skip_cov_calculation = true;
+    o.skip_quality_calculation = true;
+    mrpt::slam::CICP icp(o);
+    mrpt::slam::CICP::TReturnInfo info;
+    // The ground truth's walls are the reference; the map's walls' pose in its frame is the
+    // map -> ground truth transform.
+    const auto pose =
+        icp.Align(&walls_gt, &walls_map,
+                  mrpt::poses::CPose2D(start.x_m, start.y_m, mrpt::DEG2RAD(start.yaw_deg)), info)
+            ->getMeanVal();
+    return Transform2D{pose.x(), pose.y(), mrpt::RAD2DEG(pose.phi())};
 }
 
 }  // namespace mrpt_topoeval::internal

@@ -9,6 +9,7 @@
 #include <mrpt_topoeval/TopologyGraph.h>
 #include <mrpt_topoeval/geometry/Transform2D.h>
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -61,5 +62,16 @@ WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
                             const std::vector<std::pair<int, int>>& pairs,
                             const Transform2D& gt_T_map, double margin_m, double tolerance_m,
                             double pinning_from_share = 0.0);
+
+/** The ICP of the walls around `pairs` (a pair's place, a part's turn, a grown pair the walls
+ * vouch for): the wall points within each vertex's clearance + `margin_m` in both maps (not
+ * thinned: ICP wants them all), aligned by MRPT's CICP, classic, from `start` (map -> ground
+ * truth). Its first matching distance is `reach_m`, at least 3 cells, halved down to two cells.
+ * None when either map has fewer than 20 wall points there (a bare plan's few walls). */
+std::optional<Transform2D> alignWallsByIcp(const TopologyGraph& gt, const TopologyGraph& map,
+                                           const WallIndex& gt_walls, const WallIndex& map_walls,
+                                           const std::vector<std::pair<int, int>>& pairs,
+                                           double margin_m, const Transform2D& start,
+                                           double reach_m);
 
 }  // namespace mrpt_topoeval::internal
