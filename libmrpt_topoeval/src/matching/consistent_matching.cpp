@@ -356,12 +356,20 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // pin it (min_part_wall_agreement, max_wall_pinning); a small first group needs walls that
     // agree too (min_first_group_wall_agreement, below). The walls are indexed on first use.
     std::optional<WallIndex> gt_walls, map_walls;
-    const double wall_tolerance =
-        std::max(p.wall_tolerance_m, 1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
-    auto wallsOf = [&](const std::vector<int>& group, const Transform2D& fit)
+    auto indexWalls = [&]
     {
         if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
         if (!map_walls) map_walls.emplace(map.wall_points_m);
+    };
+    const double wall_tolerance =
+        std::max(p.wall_tolerance_m, 1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
+    // The small part's wall test (also a grown pair's that only its walls vouch for). A share
+    // is 0 where either map has no walls.
+    auto agreeAndPin = [&](const WallAgreement& w)
+    { return w.share >= p.min_part_wall_agreement && w.pinning <= p.max_wall_pinning; };
+    auto wallsOf = [&](const std::vector<int>& group, const Transform2D& fit)
+    {
+        indexWalls();
         std::vector<std::pair<int, int>> pairs;
         for (int i : group) pairs.emplace_back(cands[i].gt, cands[i].map);
         return wallAgreement(gt, map, *gt_walls, *map_walls, pairs, fit, p.wall_margin_m,
@@ -370,8 +378,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     auto wallsConfirm = [&](const std::vector<int>& group, const Transform2D& fit)
     {
         if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
-        const WallAgreement walls = wallsOf(group, fit);
-        return walls.share >= p.min_part_wall_agreement && walls.pinning <= p.max_wall_pinning;
+        return agreeAndPin(wallsOf(group, fit));
     };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
@@ -742,8 +749,9 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 double score;
                 int gt, map, group;
                 Transform2D fit;   //!< the group's local fit that placed it
+                double error;      //!< how far from its vertex that fit puts the partner
+                double tolerance;  //!< ... and how far it may
                 bool by_walls;     //!< less similar than the pass asks: its walls must confirm
-                double tolerance;  //!< how far from its vertex the fit may put the partner
             };
             std::vector<Proposal> proposals;
             for (int a = 0; a < n_gt; ++a)
@@ -813,7 +821,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                         const double err = (T.apply(pm(b)) - pg(a)).norm();
                         if (err > tol) continue;
                         proposals.push_back(
-                            {(1.0 - err / tol) + S(a, b), a, b, int(g), T, by_walls, tol});
+                            {(1.0 - err / tol) + S(a, b), a, b, int(g), T, err, tol, by_walls});
                     }
                 }
             }
@@ -835,27 +843,21 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                     // The walls decide: aligned by ICP from the fit (which, made of pairs up to
                     // growing_radius_m away, may put a room a few decimetres off), they must
                     // still put the partner within the pair's tolerance, agree and pin.
-                    if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
-                    if (!map_walls) map_walls.emplace(map.wall_points_m);
+                    indexWalls();
                     const std::vector<std::pair<int, int>> pair{{pr.gt, pr.map}};
-                    const double own = (pg(pr.gt) - pr.fit.apply(pm(pr.map))).norm();
                     const auto walls_fit =
                         alignWallsByIcp(gt, map, *gt_walls, *map_walls, pair, p.wall_margin_m,
-                                        pr.fit, std::max(own, wall_tolerance));
+                                        pr.fit, std::max(pr.error, wall_tolerance));
                     if (!walls_fit ||
-                        (pg(pr.gt) - walls_fit->apply(pm(pr.map))).norm() > pr.tolerance)
-                        continue;
-                    const WallAgreement w =
-                        wallAgreement(gt, map, *gt_walls, *map_walls, pair, *walls_fit,
-                                      p.wall_margin_m, wall_tolerance, p.min_part_wall_agreement);
-                    if (!w.walls_on_both || w.share < p.min_part_wall_agreement ||
-                        w.pinning > p.max_wall_pinning)
+                        (pg(pr.gt) - walls_fit->apply(pm(pr.map))).norm() > pr.tolerance ||
+                        !agreeAndPin(wallAgreement(gt, map, *gt_walls, *map_walls, pair, *walls_fit,
+                                                   p.wall_margin_m, wall_tolerance,
+                                                   p.min_part_wall_agreement)))
                         continue;
                 }
                 else if (check_walls)
                 {
-                    if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
-                    if (!map_walls) map_walls.emplace(map.wall_points_m);
+                    indexWalls();
                     // The share only (its pinning is not asked: pinning_from_share above 1).
                     // Walls on one side only (a vertex bounded by unexplored space) say nothing.
                     const WallAgreement w =
