@@ -1051,10 +1051,10 @@ void radishSlamPairs(const fs::path& data, std::vector<RealPair>& out,
         std::string name = log_name + "_rawlog_icp_slam";
         name.erase(std::remove(name.begin(), name.end(), '-'), name.end());
         if (wanted && !wanted(name)) continue;
+        const fs::path ref_file = data / "radish" / (log_name + "-corrected_ref.yaml");
+        const fs::path log_file = data / "rawlogs" / (log_name + "-corrected.rawlog");
         try
         {
-            const fs::path ref_file = data / "radish" / (log_name + "-corrected_ref.yaml");
-            const fs::path log_file = data / "rawlogs" / (log_name + "-corrected.rawlog");
             RealPair p;
             p.name = name;
             p.family = "radish";
@@ -1064,6 +1064,8 @@ void radishSlamPairs(const fs::path& data, std::vector<RealPair>& out,
             RawlogScorerOptions o;
             o.every_scans = std::numeric_limits<std::size_t>::max();  // the final map only
             RawlogScoreResult res = RawlogScorer(o, Parameters()).run(log_file.string(), p.gt);
+            // A log read only in part would be scored as if it were the whole run.
+            if (res.stop != RawlogStop::EndOfFile) throw std::runtime_error(res.stop_message);
             p.map = std::move(res.final_grid);
             const std::vector<RawScan> scans = readScans(log_file);
             std::vector<CPose2D> est, truth;
@@ -1099,6 +1101,10 @@ void radishSlamPairs(const fs::path& data, std::vector<RealPair>& out,
         }
         catch (const std::exception& e)
         {
+            // Its files there but the pair not made is a failure of the instrument, not a
+            // missing input: the run stops (else the floors of its ctest would check nothing).
+            if (fs::exists(ref_file) && fs::exists(log_file))
+                throw std::runtime_error(name + ": " + e.what());
             note(skipped, name + ": " + e.what());
         }
     }
