@@ -73,6 +73,9 @@ struct CaseScore
     /** One line per false pair, for the pictures: "gt G -> map M (stage), truth puts M D m from
      * G" (D absent when the truth does not place M). */
     std::vector<std::string> false_pairs;
+    /** One line per ground-truth vertex with a counterpart, for the pictures: "gt G -> map M
+     * (part P, matched to X)", X the map vertex the match pairs G with (-1: none). */
+    std::vector<std::string> counterpart_lines;
     /** The match's and the evaluation's messages (why nothing matched, what was refused). */
     std::vector<std::string> messages;
     double precision = 0.0;  //!< true / matched (NaN when nothing was matched).

@@ -519,6 +519,12 @@ int main(int argc, char** argv)
                 };
                 writeGrid(groundTruthOf(corpus, c), ".gt.gridmap");
                 writeGrid(map, ".map.gridmap");
+                if (!r.score.counterpart_lines.empty())
+                {
+                    std::string text;
+                    for (const auto& line : r.score.counterpart_lines) text += line + "\n";
+                    writeFileAtomically(fs::path(png).replace_extension(".counterparts.txt"), text);
+                }
                 if (!r.score.false_pairs.empty())
                 {
                     std::string text;

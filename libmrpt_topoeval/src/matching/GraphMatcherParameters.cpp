@@ -76,6 +76,10 @@ TOPOEVAL_PARAMETER_TABLE(
     integer(TOPOEVAL_KEY(min_part_group_vertices), "1",
             "consistent: smallest further group, bridged to an accepted one (a broken part)",
             atLeast(3)),
+    integer(TOPOEVAL_KEY(min_joined_piece_pairs), "1",
+            "consistent: a further group's other linked pieces of this many pairs join it when "
+            "its fit places them and the walls agree (0: off)",
+            atLeast(0)),
     real(TOPOEVAL_KEY(part_bridge_ratio), "ratio",
          "consistent: a further group's neighbour pairs keep their distance within this",
          atLeast(0)),

@@ -177,15 +177,17 @@ std::vector<int> nearInGraph(const MatchView& view, int v, int hops)
     return out;
 }
 
-// The biggest set of the given pairs connected by links (`linked(x, y)` on two candidates: (g1,
-// m1) and (g2, m2) are linked when g2 lies within support_hops view edges of g1 and m2 within
-// support_hops of m1). Ties: the first found. Returns the members in the given order.
+// The given pairs' components connected by links (`linked(x, y)` on two candidates: (g1, m1)
+// and (g2, m2) are linked when g2 lies within support_hops view edges of g1 and m2 within
+// support_hops of m1), the biggest first (ties: the first found), each's members in the given
+// order.
 template <typename Linked>
-std::vector<int> largestLinkedComponent(const std::vector<int>& set,
-                                        const std::vector<Candidate>& cands, Linked linked)
+std::vector<std::vector<int>> linkedComponents(const std::vector<int>& set,
+                                               const std::vector<Candidate>& cands, Linked linked)
 {
     const std::size_t n = set.size();
-    std::vector<int> component(n, -1), best;
+    std::vector<int> component(n, -1);
+    std::vector<std::vector<int>> out;
     for (std::size_t s = 0; s < n; ++s)
     {
         if (component[s] >= 0) continue;
@@ -201,11 +203,12 @@ std::vector<int> largestLinkedComponent(const std::vector<int>& set,
                     members.push_back(int(j));
                 }
         }
-        if (members.size() > best.size()) best = members;
+        std::sort(members.begin(), members.end());
+        for (int& k : members) k = set[k];
+        out.push_back(std::move(members));
     }
-    std::sort(best.begin(), best.end());
-    std::vector<int> out;
-    for (int k : best) out.push_back(set[k]);
+    std::stable_sort(out.begin(), out.end(),
+                     [](const auto& a, const auto& b) { return a.size() > b.size(); });
     return out;
 }
 
@@ -380,37 +383,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
         return agreeAndPin(wallsOf(group, fit));
     };
-    // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
-    // that drops the worst pair while any lies farther from its place than its tolerance; the
-    // biggest part linked in both graphs; then the size, extent, bridge and similarity rules.
-    // Returns false (and the group as far as it got) when it is not acceptable.
-    auto settle = [&](std::vector<int>& group)
+    // The rules a linked group must meet: extent, one rigid part, a bridge to the accepted
+    // groups, similarity.
+    auto acceptable = [&](const std::vector<int>& group)
     {
-        const int need = needed();
-        for (;;)
-        {
-            if (int(group.size()) < need) return false;
-            const auto [a, b] = pointsOf(group);
-            const Transform2D T = hornAlign(a, b);
-            Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-            for (const auto& x : a) centre += x;
-            centre /= double(a.size());
-            int worst = -1;
-            double worst_excess = 0.0;
-            for (std::size_t k = 0; k < group.size(); ++k)
-            {
-                const double excess = (a[k] - T.apply(b[k])).norm() -
-                                      tolerance(cands[group[k]], (a[k] - centre).norm());
-                if (excess > worst_excess) worst_excess = excess, worst = int(k);
-            }
-            if (worst < 0) break;
-            group.erase(group.begin() + worst);
-        }
-        // Topological support: a true group is a connected piece of both graphs; a set
-        // consistent by chance (different buildings made of the same corridors and rooms) is
-        // scattered. Only the biggest linked component stays.
-        group = largestLinkedComponent(group, cands, linkedPairs);
-        if (int(group.size()) < need) return false;
         double extent = 0.0;
         for (int i : group)
             for (int j : group)
@@ -480,6 +456,69 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 return false;
         }
         return true;
+    };
+    // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
+    // that drops the worst pair while any lies farther from its place than its tolerance; the
+    // biggest part linked in both graphs; then the size, extent, bridge and similarity rules.
+    // Returns false (and the group as far as it got) when it is not acceptable.
+    auto settle = [&](std::vector<int>& group)
+    {
+        const int need = needed();
+        for (;;)
+        {
+            if (int(group.size()) < need) return false;
+            const auto [a, b] = pointsOf(group);
+            const Transform2D T = hornAlign(a, b);
+            Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+            for (const auto& x : a) centre += x;
+            centre /= double(a.size());
+            int worst = -1;
+            double worst_excess = 0.0;
+            for (std::size_t k = 0; k < group.size(); ++k)
+            {
+                const double excess = (a[k] - T.apply(b[k])).norm() -
+                                      tolerance(cands[group[k]], (a[k] - centre).norm());
+                if (excess > worst_excess) worst_excess = excess, worst = int(k);
+            }
+            if (worst < 0) break;
+            group.erase(group.begin() + worst);
+        }
+        // Topological support: a true group is a connected piece of both graphs; a set
+        // consistent by chance (different buildings made of the same corridors and rooms) is
+        // scattered. Only the biggest linked component stays; a further group's other pieces
+        // join it when its own fit places them and the walls vouch for the whole
+        // (min_joined_piece_pairs).
+        const std::vector<std::vector<int>> pieces = linkedComponents(group, cands, linkedPairs);
+        group = pieces.empty() ? std::vector<int>{} : pieces.front();
+        if (int(group.size()) < need) return false;
+        if (!out.cores.empty() && p.min_joined_piece_pairs > 0 && pieces.size() > 1)
+        {
+            std::vector<int> joined = group;
+            const Transform2D core_fit = fitOf(group, nullptr);
+            Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+            for (int i : group) centre += pg(cands[i].gt);
+            centre /= double(group.size());
+            auto placed = [&](int i)
+            {
+                const Eigen::Vector2d& a = pg(cands[i].gt);
+                return (a - core_fit.apply(pm(cands[i].map))).norm() <=
+                       tolerance(cands[i], (a - centre).norm());
+            };
+            for (std::size_t k = 1; k < pieces.size(); ++k)
+                if (int(pieces[k].size()) >= p.min_joined_piece_pairs &&
+                    std::all_of(pieces[k].begin(), pieces[k].end(), placed))
+                    joined.insert(joined.end(), pieces[k].begin(), pieces[k].end());
+            std::sort(joined.begin(), joined.end());
+            // Joined only when the whole is a group too (a piece can give it a neighbour pair
+            // whose distance the turn changed, which a piece of its own does not have).
+            if (joined.size() > group.size() && wallsConfirm(joined, fitOf(joined, nullptr)) &&
+                acceptable(joined))
+            {
+                group = std::move(joined);
+                return true;
+            }
+        }
+        return acceptable(group);
     };
     // A further group (a broken map's other part): the best acceptable consensus of the pool.
     // Near a break a clique mixes two parts (within a few metres of the pivot a turn of 10-30

@@ -132,6 +132,15 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * similarity is at least min_small_group_similarity: the 5 of the paper miss the parts of
      * a building cut in three or four [1]. */
     int min_part_group_vertices = 3;
+    /** A further group is one linked piece of both graphs (support_hops), but a part's rigid
+     * set of pairs can lie in two pieces: a room whose loop puts 5-6 edges between its two
+     * ends, the unmatched vertices between them changed at the cut. Other linked pieces of at
+     * least this many pairs join the biggest when the biggest is a group by itself, its own
+     * fit places them within tolerance, the walls around the whole agree and pin it
+     * (min_part_wall_agreement, max_wall_pinning) and the whole is a group too. A single pair
+     * is not joined: two linked pairs are a fixed segment, one is any vertex the fit happens
+     * to place. Not for the first group. 0: off (doc/matching.md) [1]. */
+    int min_joined_piece_pairs = 2;
     /** A further group next to an accepted one in the ground truth (support_hops) must have a
      * bridge: one such neighbour pair whose map distance equals its ground-truth distance
      * within distance_tolerance_m + clearance share + this x the distance (a turn of up to 30
