@@ -132,9 +132,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             const int by = m.spurious ? kNotTrue : trueBy(g.id, m.id);
             if (by == kNotTrue) continue;
             ++s.gt_with_counterpart;
-            int partner = -1;
-            for (const auto& p : report.match.pairs)
-                if (p.ground_truth == g.id) partner = p.map;
+            const int partner = report.match.mapVertexOf(g.id);
             s.counterpart_lines.push_back("gt " + std::to_string(g.id) + " -> map " +
                                           std::to_string(m.id) + " (part " + std::to_string(by) +
                                           ", matched to " + std::to_string(partner) + ")");

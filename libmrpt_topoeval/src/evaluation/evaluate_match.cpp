@@ -539,8 +539,9 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     // pair is a compromise between the parts, and the refits from it reach the nearest minimum
     // (a few more pairs of a small part turned the fit of column_hall_1002/broken_2 by 8 deg and
     // its relative RMSE from 0.65 to 0.95 m). So each group's own fit starts the refits too,
-    // and the alignment whose counted errors are the smallest wins (ties: the fit of all
-    // pairs; doc/quality.md, "The best alignment").
+    // and the alignment whose vertices' counted errors are the smallest wins (ties: the fit of
+    // all pairs); chosen on the vertices, before the walls place the pairs (an ICP per pair and
+    // start; doc/quality.md, "The best alignment").
     if (p.outlier_distance_m > 0.0)
     {
         auto cost = [&](const Transform2D& x)

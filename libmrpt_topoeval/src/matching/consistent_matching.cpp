@@ -459,7 +459,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
-    // biggest part linked in both graphs; then the size, extent, bridge and similarity rules.
+    // biggest part linked in both graphs (a further group's other linked pieces joined when
+    // they may be); then the size, extent, bridge and similarity rules.
     // Returns false (and the group as far as it got) when it is not acceptable.
     auto settle = [&](std::vector<int>& group)
     {
@@ -494,14 +495,14 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (!out.cores.empty() && p.min_joined_piece_pairs > 0 && pieces.size() > 1)
         {
             std::vector<int> joined = group;
-            const Transform2D core_fit = fitOf(group, nullptr);
+            const Transform2D piece_fit = fitOf(group, nullptr);
             Eigen::Vector2d centre = Eigen::Vector2d::Zero();
             for (int i : group) centre += pg(cands[i].gt);
             centre /= double(group.size());
             auto placed = [&](int i)
             {
                 const Eigen::Vector2d& a = pg(cands[i].gt);
-                return (a - core_fit.apply(pm(cands[i].map))).norm() <=
+                return (a - piece_fit.apply(pm(cands[i].map))).norm() <=
                        tolerance(cands[i], (a - centre).norm());
             };
             for (std::size_t k = 1; k < pieces.size(); ++k)

@@ -135,11 +135,12 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
     /** A further group is one linked piece of both graphs (support_hops), but a part's rigid
      * set of pairs can lie in two pieces: a room whose loop puts 5-6 edges between its two
      * ends, the unmatched vertices between them changed at the cut. Other linked pieces of at
-     * least this many pairs join the biggest when the biggest is a group by itself, its own
-     * fit places them within tolerance, the walls around the whole agree and pin it
-     * (min_part_wall_agreement, max_wall_pinning) and the whole is a group too. A single pair
-     * is not joined: two linked pairs are a fixed segment, one is any vertex the fit happens
-     * to place. Not for the first group. 0: off (doc/matching.md) [1]. */
+     * least this many pairs join the biggest when the biggest holds as many pairs as a
+     * further group needs (min_part_group_vertices), its own fit places each of them within
+     * tolerance, the walls around the whole agree and pin it (min_part_wall_agreement,
+     * max_wall_pinning) and the whole is an acceptable group (judged by its own size). 2, not
+     * 1: two linked pairs are a fixed segment, one is any vertex the fit happens to place.
+     * Not for the first group. 0: off (doc/matching.md) [1]. */
     int min_joined_piece_pairs = 2;
     /** A further group next to an accepted one in the ground truth (support_hops) must have a
      * bridge: one such neighbour pair whose map distance equals its ground-truth distance
