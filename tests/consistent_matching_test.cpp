@@ -13,6 +13,7 @@
 #include <mrpt_topoeval/map_io.h>
 #include <mrpt_topoeval/matching/match_graphs.h>
 #include <mrpt_topoeval/output.h>
+#include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <Eigen/Geometry>
 #include <array>
@@ -795,4 +796,55 @@ TEST(ConsistentMatching, AFurnishedHallsRoomsAreMatchedByTheirWalls)
         // The walls match all three rooms; without them none (their similarity is too low).
         EXPECT_EQ(found, mp == &tp.matcher ? 3 : 0);
     }
+}
+
+// A further part whose consistent pairs lie in two linked pieces of the graphs is one group
+// (min_joined_piece_pairs): corpus seed 2's angled_2004/broken_2 (`topoeval_validate --seed 2
+// --only angled_2004/broken_2 --pictures 1`, the maps the validator made, kept in tests/data),
+// a building cut in three. The truth is the validator's (`*.counterparts.txt`): every
+// ground-truth vertex with a counterpart, its map vertex and its part. Without the rule the
+// part turned by 72 degrees is not found: one break, 15 pairs.
+TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
+{
+    const std::string dir = testsDir() + "/data/joined_piece/";
+    const COccupancyGridMap2D gt = loadMap(dir + "angled_2004_broken_2.gt.gridmap").grid;
+    const COccupancyGridMap2D map = loadMap(dir + "angled_2004_broken_2.map.gridmap").grid;
+    struct Truth
+    {
+        int gt, map, part;
+    };
+    const std::vector<Truth> truth = {
+        {0, 44, 0},  {1, 34, 0},  {2, 33, 0},  {3, 29, 0},  {4, 38, 0}, {9, 31, 0},  {12, 40, 2},
+        {13, 30, 2}, {14, 36, 0}, {15, 19, 2}, {18, 7, 1},  {19, 4, 1}, {20, 23, 2}, {21, 8, 1},
+        {22, 1, 1},  {23, 9, 1},  {24, 26, 2}, {25, 10, 1}, {26, 5, 1}, {27, 22, 2}, {28, 2, 1},
+        {29, 0, 1},  {30, 24, 2}, {31, 32, 2}, {32, 27, 2}, {34, 6, 1}, {35, 25, 2}};
+    auto partOf = [&](int g, int m)
+    {
+        for (const auto& t : truth)
+            if (t.gt == g && t.map == m) return t.part;
+        return -1;  // not a true pair
+    };
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.min_joined_piece_pairs = 0;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    // Every pair true; the three parts are three brokenness groups, each of one part.
+    for (const auto& p : r.match.pairs)
+        EXPECT_GE(partOf(p.ground_truth, p.map), 0) << p.ground_truth << " -> " << p.map;
+    EXPECT_GE(r.match.pairs.size(), 25u);
+    EXPECT_EQ(r.brokenness.degree, 2);
+    ASSERT_EQ(r.brokenness.groups.size(), 3u);
+    std::set<int> parts;
+    for (const auto& g : r.brokenness.groups)
+    {
+        std::set<int> of_group;
+        for (std::size_t k = 0; k < g.gt_vertices.size(); ++k)
+            of_group.insert(partOf(g.gt_vertices[k], r.match.mapVertexOf(g.gt_vertices[k])));
+        EXPECT_EQ(of_group.size(), 1u);
+        parts.insert(*of_group.begin());
+    }
+    EXPECT_EQ(parts, (std::set<int>{0, 1, 2}));
+    // Without the rule: one break missed.
+    EXPECT_EQ(r0.brokenness.degree, 1);
+    EXPECT_LE(r0.match.pairs.size(), 15u);
 }
