@@ -524,6 +524,17 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     // outlier distance (doc/quality.md), so one wrong pair does not decide the score.
     std::vector<double> slack;
     for (const auto& pr : match.pairs) slack.push_back(pairSlack(ground_truth, map, pr, p));
+    // The sum of the squared counted errors of the pairs placed at `pts` under `x`.
+    auto countedSquares = [&](const Transform2D& x, const std::vector<Eigen::Vector2d>& pts)
+    {
+        double c = 0.0;
+        for (std::size_t i = 0; i < pg.size(); ++i)
+        {
+            const double e = countedError((pg[i] - x.apply(pts[i])).norm(), slack[i], p);
+            c += e * e;
+        }
+        return c;
+    };
     auto refit = [&](Transform2D t)
     {
         for (int round = 0; round < 3 && p.outlier_distance_m > 0.0; ++round)
@@ -544,17 +555,7 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     // start; doc/quality.md, "The best alignment").
     if (p.outlier_distance_m > 0.0)
     {
-        auto cost = [&](const Transform2D& x)
-        {
-            double c = 0.0;
-            for (std::size_t i = 0; i < pg.size(); ++i)
-            {
-                const double e = countedError((pg[i] - x.apply(pm[i])).norm(), slack[i], p);
-                c += e * e;
-            }
-            return c;
-        };
-        double best = cost(t);
+        double best = countedSquares(t, pm);
         std::map<int, std::vector<std::size_t>> groups;
         for (std::size_t i = 0; i < match.pairs.size(); ++i)
             if (match.pairs[i].isomorphism >= 0) groups[match.pairs[i].isomorphism].push_back(i);
@@ -564,7 +565,7 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
             std::vector<Eigen::Vector2d> a, b;
             for (std::size_t i : members) a.push_back(pg[i]), b.push_back(pm[i]);
             const Transform2D start = refit(internal::hornAlign(a, b));
-            const double c = cost(start);
+            const double c = countedSquares(start, pm);
             if (c < best - 1e-9) t = start, best = c;
         }
     }
@@ -580,12 +581,7 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
         const InlierFit f = fitOfInliers(pg, places, t, p.outlier_distance_m);
         if (f.inliers >= 2) t = f.transform;
     }
-    double sq = 0.0;
-    for (std::size_t i = 0; i < pg.size(); ++i)
-    {
-        const double e = countedError((pg[i] - t.apply(places[i])).norm(), slack[i], p);
-        sq += e * e;
-    }
+    const double sq = countedSquares(t, places);
     r.local_consistency = localConsistency(ground_truth, match, places, slack, p);
     r.relative_accuracy.pairs = pg.size();
     r.relative_accuracy.transform = t;

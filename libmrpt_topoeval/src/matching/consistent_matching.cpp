@@ -312,6 +312,17 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     out.min_group_size = min_size;
     auto tolerance = [&](const Candidate& c, double dist)
     { return p.distance_tolerance_m + c.uncertainty_m + p.distance_tolerance_ratio * dist; };
+    // How far a fit (map to ground truth) puts a candidate's map vertex from its ground-truth
+    // vertex, and the centre of a set's ground-truth vertices (settling measures a pair's
+    // tolerance from it).
+    auto offBy = [&](const Candidate& c, const Transform2D& T)
+    { return (pg(c.gt) - T.apply(pm(c.map))).norm(); };
+    auto centreOf = [&](const std::vector<int>& set)
+    {
+        Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+        for (int i : set) centre += pg(cands[i].gt);
+        return Eigen::Vector2d(centre / double(set.size()));
+    };
     // Vertices within support_hops edges, sorted, for the links between pairs.
     std::vector<std::vector<int>> near_gt(n_gt), near_map(n_map);
     for (int a = 0; a < n_gt; ++a)
@@ -468,17 +479,14 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         for (;;)
         {
             if (int(group.size()) < need) return false;
-            const auto [a, b] = pointsOf(group);
-            const Transform2D T = hornAlign(a, b);
-            Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-            for (const auto& x : a) centre += x;
-            centre /= double(a.size());
+            const Transform2D T = fitOf(group, nullptr);
+            const Eigen::Vector2d centre = centreOf(group);
             int worst = -1;
             double worst_excess = 0.0;
             for (std::size_t k = 0; k < group.size(); ++k)
             {
-                const double excess = (a[k] - T.apply(b[k])).norm() -
-                                      tolerance(cands[group[k]], (a[k] - centre).norm());
+                const Candidate& c = cands[group[k]];
+                const double excess = offBy(c, T) - tolerance(c, (pg(c.gt) - centre).norm());
                 if (excess > worst_excess) worst_excess = excess, worst = int(k);
             }
             if (worst < 0) break;
@@ -496,14 +504,11 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         {
             std::vector<int> joined = group;
             const Transform2D piece_fit = fitOf(group, nullptr);
-            Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-            for (int i : group) centre += pg(cands[i].gt);
-            centre /= double(group.size());
+            const Eigen::Vector2d centre = centreOf(group);
             auto placed = [&](int i)
             {
-                const Eigen::Vector2d& a = pg(cands[i].gt);
-                return (a - piece_fit.apply(pm(cands[i].map))).norm() <=
-                       tolerance(cands[i], (a - centre).norm());
+                const Candidate& c = cands[i];
+                return offBy(c, piece_fit) <= tolerance(c, (pg(c.gt) - centre).norm());
             };
             for (std::size_t k = 1; k < pieces.size(); ++k)
                 if (int(pieces[k].size()) >= p.min_joined_piece_pairs &&
@@ -551,7 +556,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                     const Candidate& c = cands[k];
                     const double dist =
                         std::min((pg(c.gt) - pg(ci.gt)).norm(), (pg(c.gt) - pg(cj.gt)).norm());
-                    const double err = (pg(c.gt) - T.apply(pm(c.map))).norm();
+                    const double err = offBy(c, T);
                     if (err <= tolerance(c, dist)) in.emplace_back(err, k);
                 }
                 if (in.size() < std::max<std::size_t>(best.size(), 3)) continue;
@@ -571,7 +576,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 if (!tried.insert(kept).second) continue;
                 if (!settle(kept)) continue;
                 double err_sum = 0.0;
-                for (int k : kept) err_sum += (pg(cands[k].gt) - T.apply(pm(cands[k].map))).norm();
+                for (int k : kept) err_sum += offBy(cands[k], T);
                 if (kept.size() > best.size() || (kept.size() == best.size() && err_sum < best_err))
                     best = std::move(kept), best_err = err_sum;
             }
@@ -696,7 +701,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             std::vector<std::uint8_t> gt_in(n_gt, 0), map_in(n_map, 0), member(n, 0);
             for (int i : clique) gt_in[cands[i].gt] = map_in[cands[i].map] = member[i] = 1;
             auto misplaced = [&](const Candidate& c, const Transform2D& fit)
-            { return (pg(c.gt) - fit.apply(pm(c.map))).norm() > tolerance(c, 0.0); };
+            { return offBy(c, fit) > tolerance(c, 0.0); };
             std::vector<int> rival_pool;
             const Transform2D fit = fitOf(clique, nullptr);
             for (int i : pool)
