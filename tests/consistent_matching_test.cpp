@@ -848,3 +848,41 @@ TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
     EXPECT_EQ(r0.brokenness.degree, 1);
     EXPECT_LE(r0.match.pairs.size(), 15u);
 }
+
+TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)
+{
+    // A building cut in four (the validator's multi_wing_5003/broken_3, seed 5): its top wing
+    // keeps three vertices with a counterpart, and the junctions between it and the other
+    // parts changed at the cuts. No matched vertex lies next to it, so it has no neighbour pair
+    // to bridge by; with isolated_part_bridge its similarity and its walls accept it.
+    const std::string dir = testsDir() + "/data/isolated_part/";
+    const COccupancyGridMap2D gt = loadMap(dir + "multi_wing_5003_broken_3.gt.gridmap").grid;
+    const COccupancyGridMap2D map = loadMap(dir + "multi_wing_5003_broken_3.map.gridmap").grid;
+    // The validator's counterparts (gt -> map); (16, 48) is true by position too: gt 16 and 18
+    // merged into map junction 45, and 48 lies where part 1's turn puts 16.
+    const std::set<std::pair<int, int>> truth = {
+        {0, 60},  {1, 33},  {2, 18},  {3, 25},  {4, 57},  {5, 56},  {6, 26},  {7, 14},
+        {8, 55},  {9, 50},  {10, 27}, {11, 20}, {12, 53}, {13, 19}, {15, 7},  {16, 45},
+        {16, 48}, {17, 17}, {18, 45}, {19, 61}, {20, 12}, {21, 4},  {22, 61}, {23, 71},
+        {24, 69}, {25, 21}, {27, 10}, {29, 43}, {30, 51}, {31, 8},  {32, 3},  {33, 6},
+        {34, 16}, {36, 1},  {37, 9},  {38, 29}, {40, 13}, {41, 37}, {42, 23}, {43, 39},
+        {44, 32}, {45, 28}, {46, 15}, {47, 31}, {48, 36}, {49, 24}, {50, 40}};
+    const std::set<int> wing = {22, 23, 24};
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.isolated_part_bridge = false;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    for (const auto& p : r.match.pairs)
+        EXPECT_TRUE(truth.count({p.ground_truth, p.map})) << p.ground_truth << " -> " << p.map;
+    for (int g : wing) EXPECT_TRUE(truth.count({g, r.match.mapVertexOf(g)})) << g;
+    // The wing is a brokenness group of its own: four parts, three breaks.
+    EXPECT_EQ(r.brokenness.degree, 3);
+    bool wing_group = false;
+    for (const auto& grp : r.brokenness.groups)
+        wing_group =
+            wing_group || std::set<int>(grp.gt_vertices.begin(), grp.gt_vertices.end()) == wing;
+    EXPECT_TRUE(wing_group);
+    // Without the rule the wing stays unmatched and its break unseen.
+    for (int g : wing) EXPECT_LT(r0.match.mapVertexOf(g), 0) << g;
+    EXPECT_EQ(r0.brokenness.degree, 2);
+}

@@ -87,6 +87,9 @@ TOPOEVAL_PARAMETER_TABLE(
          "consistent: a further group bridges when its turn's pivot is this near both groups "
          "(a small one if its walls agree too)",
          atLeast(0)),
+    flag(TOPOEVAL_KEY(isolated_part_bridge),
+         "consistent: a small further group with no matched neighbour bridges by its similarity "
+         "and walls"),
     real(TOPOEVAL_KEY(min_part_wall_agreement), "0..1",
          "consistent: a small further group, or a pair grown without links, less similar "
          "needs this share of its walls agreeing (0: off)",

@@ -394,6 +394,12 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
         return agreeAndPin(wallsOf(group, fit));
     };
+    auto meanSimilarity = [&](const std::vector<int>& set)
+    {
+        double sum = 0.0;
+        for (int i : set) sum += S(cands[i].gt, cands[i].map);
+        return set.empty() ? 0.0 : sum / double(set.size());
+    };
     // The rules a linked group must meet: extent, one rigid part, a bridge to the accepted
     // groups, similarity.
     auto acceptable = [&](const std::vector<int>& group)
@@ -454,16 +460,20 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                          std::any_of(out.cores[k].begin(), out.cores[k].end(),
                                      [&](const auto& pair) { return near(pair.first); });
             }
+            // A small group that touches no accepted group in the ground truth (the parts
+            // between them unmatched) may have neither: it bridges when it is as similar as a
+            // small graph's group must be, and, as every small group not bridged by a
+            // neighbour pair, its walls agree and pin its fit (isolated_part_bridge;
+            // doc/matching.md, "A part that touches no matched part").
+            if (small && !bridge && !neighbour && p.isolated_part_bridge)
+                bridge = meanSimilarity(group) >= p.min_small_group_similarity;
             if (small ? !bridge : (neighbour && !bridge)) return false;
             if (small && !by_neighbour && !wallsConfirm(group, fit)) return false;
         }
         if (int(group.size()) < p.min_group_vertices)
         {
             // As similar as a small graph's group must be (below).
-            double mean_s = 0.0;
-            for (int i : group) mean_s += S(cands[i].gt, cands[i].map);
-            if (mean_s / double(group.size()) < p.min_small_group_similarity &&
-                !wallsConfirm(group, fit))
+            if (meanSimilarity(group) < p.min_small_group_similarity && !wallsConfirm(group, fit))
                 return false;
         }
         return true;
@@ -674,9 +684,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (!ok)
         {
             clique = bestConsensus(whole);
-            double mean_s = 0.0;
-            for (int i : clique) mean_s += S(cands[i].gt, cands[i].map);
-            ok = !clique.empty() && mean_s / double(clique.size()) >= p.min_small_group_similarity;
+            ok = !clique.empty() && meanSimilarity(clique) >= p.min_small_group_similarity;
         }
         if (ok)
         {

@@ -158,6 +158,17 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * that bridges so must also pass the wall test below (min_part_wall_agreement,
      * max_wall_pinning) [m]. */
     double part_pivot_distance_m = 8.0;
+    /** A small further group none of whose ground-truth vertices lies within support_hops
+     * edges of an accepted group's (the parts between them unmatched: a building broken three
+     * times, its middle part changed most at its two cuts) has no neighbour pair to bridge by,
+     * and the pivot of its turn against a part it does not touch lies anywhere. It is accepted
+     * when it is as similar as a small group must be (min_small_group_similarity) and the
+     * walls around it agree under its fit and pin it (min_part_wall_agreement,
+     * max_wall_pinning): the tests a small graph's group and a pair grown without links pass.
+     * A group that has a neighbour pair whose distance disagrees stays refused (a hall's
+     * lattice). false: such a group needs the pivot (doc/matching.md, "A part that touches no
+     * matched part") [bool]. */
+    bool isolated_part_bridge = true;
     /** A further group smaller than min_group_vertices and less similar than
      * min_small_group_similarity (a part whose vertices' attributes changed at the cut: its
      * junctions lost or gained the edges across it) is still accepted when the obstacles
