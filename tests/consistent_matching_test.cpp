@@ -22,6 +22,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -824,10 +825,18 @@ TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
             if (t.gt == g && t.map == m) return t.part;
         return -1;  // not a true pair
     };
-    Parameters with = Parameters{}, without = Parameters{};
+    // Session 22's bridges (isolated_part_bridge, part_wall_bridge) find this part another
+    // way: the join is checked alone, with them off.
+    Parameters with = Parameters{}, join_only = Parameters{};
+    join_only.matcher.isolated_part_bridge = false;
+    join_only.matcher.part_wall_bridge = false;
+    Parameters without = join_only;
     without.matcher.min_joined_piece_pairs = 0;
     const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r_join = evaluate(gt, map, join_only);
     const QualityReport r0 = evaluate(gt, map, without);
+    EXPECT_EQ(r_join.brokenness.degree, 2);
+    EXPECT_GE(r_join.match.pairs.size(), 25u);
     // Every pair true; the three parts are three brokenness groups, each of one part.
     for (const auto& p : r.match.pairs)
         EXPECT_GE(partOf(p.ground_truth, p.map), 0) << p.ground_truth << " -> " << p.map;
@@ -844,7 +853,7 @@ TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
         parts.insert(*of_group.begin());
     }
     EXPECT_EQ(parts, (std::set<int>{0, 1, 2}));
-    // Without the rule: one break missed.
+    // Without the join (and session 22's bridges): one break missed.
     EXPECT_EQ(r0.brokenness.degree, 1);
     EXPECT_LE(r0.match.pairs.size(), 15u);
 }
@@ -885,4 +894,46 @@ TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)
     // Without the rule the wing stays unmatched and its break unseen.
     for (int g : wing) EXPECT_LT(r0.match.mapVertexOf(g), 0) << g;
     EXPECT_EQ(r0.brokenness.degree, 2);
+}
+
+TEST(ConsistentMatching, APartWhoseNeighbourMovedIsFoundByItsWalls)
+{
+    // A building cut in three (the validator's corridor_office_3001/broken_2, seed 3): parts 1
+    // and 2 turned, each about its own pivot. Part 0's group (6 pairs) has a matched neighbour
+    // whose distance the turns changed by more than part_bridge_ratio, and its turn against the
+    // accepted group pivots far from both; with part_wall_bridge its walls accept it.
+    const std::string dir = testsDir() + "/data/moved_neighbour/";
+    const COccupancyGridMap2D gt = loadMap(dir + "corridor_office_3001_broken_2.gt.gridmap").grid;
+    const COccupancyGridMap2D map = loadMap(dir + "corridor_office_3001_broken_2.map.gridmap").grid;
+    // The validator's counterparts (gt -> map, part).
+    const std::map<std::pair<int, int>, int> truth = {
+        {{0, 21}, 2},  {{2, 11}, 2},  {{3, 25}, 2},  {{4, 37}, 2},  {{5, 8}, 2},   {{6, 29}, 2},
+        {{9, 31}, 2},  {{10, 42}, 0}, {{12, 17}, 1}, {{13, 23}, 1}, {{16, 7}, 1},  {{17, 13}, 1},
+        {{19, 41}, 0}, {{20, 28}, 0}, {{21, 6}, 1},  {{22, 26}, 0}, {{24, 33}, 0}, {{25, 22}, 0},
+        {{26, 3}, 1},  {{27, 4}, 1},  {{28, 1}, 1},  {{29, 12}, 0}, {{30, 2}, 1},  {{32, 0}, 1}};
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.part_wall_bridge = false;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    for (const auto& p : r.match.pairs)
+        EXPECT_TRUE(truth.count({p.ground_truth, p.map})) << p.ground_truth << " -> " << p.map;
+    EXPECT_GE(r.match.pairs.size(), 20u);
+    // Three parts, three brokenness groups of one part each.
+    EXPECT_EQ(r.brokenness.degree, 2);
+    std::set<int> parts;
+    for (const auto& g : r.brokenness.groups)
+    {
+        std::set<int> of_group;
+        for (int v : g.gt_vertices)
+        {
+            const auto t = truth.find({v, r.match.mapVertexOf(v)});
+            of_group.insert(t == truth.end() ? -1 : t->second);
+        }
+        EXPECT_EQ(of_group.size(), 1u);
+        parts.insert(*of_group.begin());
+    }
+    EXPECT_EQ(parts, (std::set<int>{0, 1, 2}));
+    // Without the rule part 0 stays unmatched and its break unseen.
+    for (int g : {19, 20, 22, 24, 25, 29}) EXPECT_LT(r0.match.mapVertexOf(g), 0) << g;
+    EXPECT_EQ(r0.brokenness.degree, 1);
 }

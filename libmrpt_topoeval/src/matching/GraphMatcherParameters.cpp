@@ -90,6 +90,9 @@ TOPOEVAL_PARAMETER_TABLE(
     flag(TOPOEVAL_KEY(isolated_part_bridge),
          "consistent: a small further group with no matched neighbour bridges by its similarity "
          "and walls"),
+    flag(TOPOEVAL_KEY(part_wall_bridge),
+         "consistent: a further group of min_group_vertices pairs whose neighbour pairs moved "
+         "bridges when its walls agree and pin it"),
     real(TOPOEVAL_KEY(min_part_wall_agreement), "0..1",
          "consistent: a small further group, or a pair grown without links, less similar "
          "needs this share of its walls agreeing (0: off)",

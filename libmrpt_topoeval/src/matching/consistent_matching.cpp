@@ -467,6 +467,11 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             // doc/matching.md, "A part that touches no matched part").
             if (small && !bridge && !neighbour && p.isolated_part_bridge)
                 bridge = meanSimilarity(group) >= p.min_small_group_similarity;
+            // A big group whose neighbour pairs the turn moved and whose pivot lies far from
+            // the accepted groups (both parts turned, each about its own pivot) bridges when
+            // its walls agree and pin its fit, as a small part's must (part_wall_bridge).
+            if (!small && neighbour && !bridge && p.part_wall_bridge)
+                bridge = wallsConfirm(group, fit);
             if (small ? !bridge : (neighbour && !bridge)) return false;
             if (small && !by_neighbour && !wallsConfirm(group, fit)) return false;
         }

@@ -169,6 +169,16 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * lattice). false: such a group needs the pivot (doc/matching.md, "A part that touches no
      * matched part") [bool]. */
     bool isolated_part_bridge = true;
+    /** A further group as big as a first group must be (min_group_vertices pairs, fewer on a
+     * small graph) that has a ground-truth neighbour pair whose distance the turn changed, and
+     * whose pivot lies far from the accepted groups (neither bridge above), is accepted when the
+     * walls around it agree under its fit and pin it (min_part_wall_agreement,
+     * max_wall_pinning), as a small part's must. Two parts that both turned, each about its
+     * own pivot, turn against each other about a point that may lie far from both: the parts
+     * of a building cut three times. A chance group in a hall's lattice that sits next to the
+     * true group keeps its walls' test to pass. false: such a group is refused
+     * (doc/matching.md, "A part whose neighbour moved") [bool]. */
+    bool part_wall_bridge = true;
     /** A further group smaller than min_group_vertices and less similar than
      * min_small_group_similarity (a part whose vertices' attributes changed at the cut: its
      * junctions lost or gained the edges across it) is still accepted when the obstacles
