@@ -176,8 +176,8 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * max_wall_pinning), as a small part's must. Two parts that both turned, each about its
      * own pivot, turn against each other about a point that may lie far from both: the parts
      * of a building cut three times. A chance group in a hall's lattice that sits next to the
-     * true group keeps its walls' test to pass. false: such a group is refused
-     * (doc/matching.md, "A part whose neighbour moved") [bool]. */
+     * true group keeps its walls' test to pass. false (or min_part_wall_agreement = 0): such a
+     * group is refused (doc/matching.md, "A part whose neighbour moved") [bool]. */
     bool part_wall_bridge = true;
     /** A further group smaller than min_group_vertices and less similar than
      * min_small_group_similarity (a part whose vertices' attributes changed at the cut: its
