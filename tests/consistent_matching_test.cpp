@@ -825,8 +825,8 @@ TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
             if (t.gt == g && t.map == m) return t.part;
         return -1;  // not a true pair
     };
-    // Session 22's bridges (isolated_part_bridge, part_wall_bridge) find this part another
-    // way: the join is checked alone, with them off.
+    // Session 22's part_wall_bridge finds this part another way: the join is checked alone,
+    // with session 22's bridges off.
     Parameters with = Parameters{}, join_only = Parameters{};
     join_only.matcher.isolated_part_bridge = false;
     join_only.matcher.part_wall_bridge = false;

@@ -91,7 +91,7 @@ TOPOEVAL_PARAMETER_TABLE(
          "consistent: a small further group with no matched neighbour bridges by its similarity "
          "and walls"),
     flag(TOPOEVAL_KEY(part_wall_bridge),
-         "consistent: a further group of min_group_vertices pairs whose neighbour pairs moved "
+         "consistent: a further group as big as a first group whose neighbour pairs moved "
          "bridges when its walls agree and pin it"),
     real(TOPOEVAL_KEY(min_part_wall_agreement), "0..1",
          "consistent: a small further group, or a pair grown without links, less similar "
