@@ -799,6 +799,33 @@ TEST(ConsistentMatching, AFurnishedHallsRoomsAreMatchedByTheirWalls)
     }
 }
 
+namespace
+{
+// The ground truth and the map that the validator wrote for a corpus case (`--pictures`), kept
+// in tests/data/<folder>/<name>.{gt,map}.gridmap.
+std::pair<COccupancyGridMap2D, COccupancyGridMap2D> corpusCase(const std::string& folder,
+                                                               const std::string& name)
+{
+    const std::string base = testsDir() + "/data/" + folder + "/" + name;
+    return {loadMap(base + ".gt.gridmap").grid, loadMap(base + ".map.gridmap").grid};
+}
+
+// The parts that each brokenness group's pairs belong to, by the case's truth (partOf(gt, map):
+// the pair's part, -1 for a pair the truth does not have).
+std::vector<std::set<int>> partsOfGroups(const QualityReport& r,
+                                         const std::function<int(int, int)>& partOf)
+{
+    std::vector<std::set<int>> out;
+    for (const auto& g : r.brokenness.groups)
+    {
+        std::set<int> of_group;
+        for (int v : g.gt_vertices) of_group.insert(partOf(v, r.match.mapVertexOf(v)));
+        out.push_back(std::move(of_group));
+    }
+    return out;
+}
+}  // namespace
+
 // A further part whose consistent pairs lie in two linked pieces of the graphs is one group
 // (min_joined_piece_pairs): corpus seed 2's angled_2004/broken_2 (`topoeval_validate --seed 2
 // --only angled_2004/broken_2 --pictures 1`, the maps the validator made, kept in tests/data),
@@ -807,9 +834,7 @@ TEST(ConsistentMatching, AFurnishedHallsRoomsAreMatchedByTheirWalls)
 // part turned by 72 degrees is not found: one break, 15 pairs.
 TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
 {
-    const std::string dir = testsDir() + "/data/joined_piece/";
-    const COccupancyGridMap2D gt = loadMap(dir + "angled_2004_broken_2.gt.gridmap").grid;
-    const COccupancyGridMap2D map = loadMap(dir + "angled_2004_broken_2.map.gridmap").grid;
+    const auto [gt, map] = corpusCase("joined_piece", "angled_2004_broken_2");
     struct Truth
     {
         int gt, map, part;
@@ -844,11 +869,8 @@ TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
     EXPECT_EQ(r.brokenness.degree, 2);
     ASSERT_EQ(r.brokenness.groups.size(), 3u);
     std::set<int> parts;
-    for (const auto& g : r.brokenness.groups)
+    for (const auto& of_group : partsOfGroups(r, partOf))
     {
-        std::set<int> of_group;
-        for (std::size_t k = 0; k < g.gt_vertices.size(); ++k)
-            of_group.insert(partOf(g.gt_vertices[k], r.match.mapVertexOf(g.gt_vertices[k])));
         EXPECT_EQ(of_group.size(), 1u);
         parts.insert(*of_group.begin());
     }
@@ -864,9 +886,7 @@ TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)
     // keeps three vertices with a counterpart, and the junctions between it and the other
     // parts changed at the cuts. No matched vertex lies next to it, so it has no neighbour pair
     // to bridge by; with isolated_part_bridge its similarity and its walls accept it.
-    const std::string dir = testsDir() + "/data/isolated_part/";
-    const COccupancyGridMap2D gt = loadMap(dir + "multi_wing_5003_broken_3.gt.gridmap").grid;
-    const COccupancyGridMap2D map = loadMap(dir + "multi_wing_5003_broken_3.map.gridmap").grid;
+    const auto [gt, map] = corpusCase("isolated_part", "multi_wing_5003_broken_3");
     // The validator's counterparts (gt -> map); (16, 48) is true by position too: gt 16 and 18
     // merged into map junction 45, and 48 lies where part 1's turn puts 16.
     const std::set<std::pair<int, int>> truth = {
@@ -902,9 +922,7 @@ TEST(ConsistentMatching, APartWhoseNeighbourMovedIsFoundByItsWalls)
     // and 2 turned, each about its own pivot. Part 0's group (6 pairs) has a matched neighbour
     // whose distance the turns changed by more than part_bridge_ratio, and its turn against the
     // accepted group pivots far from both; with part_wall_bridge its walls accept it.
-    const std::string dir = testsDir() + "/data/moved_neighbour/";
-    const COccupancyGridMap2D gt = loadMap(dir + "corridor_office_3001_broken_2.gt.gridmap").grid;
-    const COccupancyGridMap2D map = loadMap(dir + "corridor_office_3001_broken_2.map.gridmap").grid;
+    const auto [gt, map] = corpusCase("moved_neighbour", "corridor_office_3001_broken_2");
     // The validator's counterparts (gt -> map, part).
     const std::map<std::pair<int, int>, int> truth = {
         {{0, 21}, 2},  {{2, 11}, 2},  {{3, 25}, 2},  {{4, 37}, 2},  {{5, 8}, 2},   {{6, 29}, 2},
@@ -920,15 +938,14 @@ TEST(ConsistentMatching, APartWhoseNeighbourMovedIsFoundByItsWalls)
     EXPECT_GE(r.match.pairs.size(), 20u);
     // Three parts, three brokenness groups of one part each.
     EXPECT_EQ(r.brokenness.degree, 2);
-    std::set<int> parts;
-    for (const auto& g : r.brokenness.groups)
+    auto partOf = [&](int g, int m)
     {
-        std::set<int> of_group;
-        for (int v : g.gt_vertices)
-        {
-            const auto t = truth.find({v, r.match.mapVertexOf(v)});
-            of_group.insert(t == truth.end() ? -1 : t->second);
-        }
+        const auto t = truth.find({g, m});
+        return t == truth.end() ? -1 : t->second;
+    };
+    std::set<int> parts;
+    for (const auto& of_group : partsOfGroups(r, partOf))
+    {
         EXPECT_EQ(of_group.size(), 1u);
         parts.insert(*of_group.begin());
     }

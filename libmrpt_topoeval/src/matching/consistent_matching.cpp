@@ -415,6 +415,13 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         double mse = 0.0;
         const Transform2D fit = fitOf(group, &mse);
         if (mse > p.max_group_squared_error_m2) return false;
+        // The walls' test of this group under its fit, made once (several rules ask for it).
+        std::optional<bool> walls_confirm;
+        auto wallsAgree = [&]
+        {
+            if (!walls_confirm) walls_confirm = wallsConfirm(group, fit);
+            return *walls_confirm;
+        };
         if (!out.cores.empty())
         {
             // A further part meets the accepted groups at its cut: where one of its
@@ -470,16 +477,14 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             // A big group whose neighbour pairs the turn moved and whose pivot lies far from
             // the accepted groups (both parts turned, each about its own pivot) bridges when
             // its walls agree and pin its fit, as a small part's must (part_wall_bridge).
-            if (!small && neighbour && !bridge && p.part_wall_bridge)
-                bridge = wallsConfirm(group, fit);
+            if (!small && neighbour && !bridge && p.part_wall_bridge) bridge = wallsAgree();
             if (small ? !bridge : (neighbour && !bridge)) return false;
-            if (small && !by_neighbour && !wallsConfirm(group, fit)) return false;
+            if (small && !by_neighbour && !wallsAgree()) return false;
         }
         if (int(group.size()) < p.min_group_vertices)
         {
             // As similar as a small graph's group must be (below).
-            if (meanSimilarity(group) < p.min_small_group_similarity && !wallsConfirm(group, fit))
-                return false;
+            if (meanSimilarity(group) < p.min_small_group_similarity && !wallsAgree()) return false;
         }
         return true;
     };
