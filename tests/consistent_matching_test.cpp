@@ -954,3 +954,50 @@ TEST(ConsistentMatching, APartWhoseNeighbourMovedIsFoundByItsWalls)
     for (int g : {19, 20, 22, 24, 25, 29}) EXPECT_LT(r0.match.mapVertexOf(g), 0) << g;
     EXPECT_EQ(r0.brokenness.degree, 1);
 }
+
+TEST(ConsistentMatching, AGroupOnlyDistancesVouchForIsRefused)
+{
+    // A column hall cut in three (the validator's column_hall_1003/broken_2, seed 1). Five
+    // pairs of the hall's lattice (gt 24, 25, 28, 36, 37), each paired with another junction of
+    // the lattice 1.9-8.9 m from its true partner, keep their distances, bridge by a neighbour
+    // pair and fit rigidly: a further group turned 23 degrees that the map does not have. Their
+    // walls disagree and their mean similarity is 0.33: with min_unconfirmed_group_similarity
+    // the group is refused.
+    const auto [gt, map] = corpusCase("chance_group", "column_hall_1003_broken_2");
+    // The validator's counterparts (gt -> map, part); (10, 27), (23, 47) and (46, 46) are true
+    // by position too (the truth places those map vertices within tolerance of them).
+    const std::map<std::pair<int, int>, int> truth = {
+        {{0, 16}, 2},  {{1, 0}, 1},   {{2, 51}, 2},  {{3, 31}, 2},  {{4, 7}, 2},   {{5, 18}, 2},
+        {{6, 3}, 1},   {{7, 54}, 2},  {{8, 1}, 1},   {{9, 37}, 2},  {{10, 23}, 2}, {{10, 27}, 2},
+        {{11, 11}, 2}, {{12, 3}, 2},  {{13, 44}, 2}, {{14, 60}, 2}, {{15, 48}, 2}, {{16, 40}, 2},
+        {{17, 29}, 2}, {{18, 10}, 2}, {{19, 8}, 1},  {{20, 2}, 1},  {{21, 59}, 2}, {{22, 50}, 2},
+        {{23, 45}, 2}, {{23, 47}, 2}, {{24, 38}, 2}, {{26, 21}, 1}, {{28, 45}, 2}, {{29, 6}, 1},
+        {{30, 21}, 1}, {{31, 64}, 0}, {{32, 42}, 0}, {{33, 61}, 0}, {{34, 30}, 1}, {{35, 39}, 0},
+        {{36, 30}, 0}, {{37, 30}, 1}, {{38, 56}, 0}, {{40, 57}, 0}, {{41, 62}, 0}, {{43, 43}, 0},
+        {{44, 33}, 0}, {{46, 43}, 0}, {{46, 46}, 0}, {{47, 63}, 0}, {{48, 58}, 0}, {{49, 13}, 0},
+        {{50, 28}, 0}, {{51, 53}, 0}, {{52, 14}, 0}};
+    const std::set<std::pair<int, int>> chance = {{24, 32}, {25, 24}, {28, 38}, {36, 42}, {37, 36}};
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.min_unconfirmed_group_similarity = 0.0;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    for (const auto& p : r.match.pairs)
+        EXPECT_TRUE(truth.count({p.ground_truth, p.map})) << p.ground_truth << " -> " << p.map;
+    EXPECT_GE(r.match.pairs.size(), 28u);
+    auto partOf = [&](int g, int m)
+    {
+        const auto t = truth.find({g, m});
+        return t == truth.end() ? -1 : t->second;
+    };
+    // Every brokenness group is one part of the building (part 1 stays unmatched: one break of
+    // two is found).
+    for (const auto& of_group : partsOfGroups(r, partOf)) EXPECT_EQ(of_group.size(), 1u);
+    EXPECT_EQ(r.brokenness.degree, 1);
+    // Without the rule the chance group is matched and counted as a part turned 23 degrees.
+    for (const auto& [g, m] : chance) EXPECT_EQ(r0.match.mapVertexOf(g), m) << g;
+    bool chance_group = false;
+    for (const auto& of_group : partsOfGroups(r0, partOf))
+        chance_group = chance_group || of_group == std::set<int>{-1};
+    EXPECT_TRUE(chance_group);
+    EXPECT_EQ(r0.brokenness.degree, 2);
+}

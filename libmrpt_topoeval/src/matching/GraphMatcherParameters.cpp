@@ -93,6 +93,10 @@ TOPOEVAL_PARAMETER_TABLE(
     flag(TOPOEVAL_KEY(part_wall_bridge),
          "consistent: a further group as big as a first group whose neighbour pairs moved "
          "bridges when its walls agree and pin it"),
+    real(TOPOEVAL_KEY(min_unconfirmed_group_similarity), "0..1",
+         "consistent: a further group whose walls disagree needs at least this mean similarity "
+         "(0: off)",
+         atLeast(0).atMost(1)),
     real(TOPOEVAL_KEY(min_part_wall_agreement), "0..1",
          "consistent: a small further group, or a pair grown without links, less similar "
          "needs this share of its walls agreeing (0: off)",

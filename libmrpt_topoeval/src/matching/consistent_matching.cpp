@@ -480,6 +480,12 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             if (!small && neighbour && !bridge && p.part_wall_bridge) bridge = wallsAgree();
             if (small ? !bridge : (neighbour && !bridge)) return false;
             if (small && !by_neighbour && !wallsAgree()) return false;
+            // A further group that neither its attributes nor its walls vouch for has only its
+            // distances, which a hall's lattice or a symmetric building repeats
+            // (min_unconfirmed_group_similarity; doc/matching.md, "A group that only distances
+            // vouch for").
+            if (meanSimilarity(group) < p.min_unconfirmed_group_similarity && !wallsAgree())
+                return false;
         }
         if (int(group.size()) < p.min_group_vertices)
         {
