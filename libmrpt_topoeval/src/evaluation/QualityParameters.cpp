@@ -42,6 +42,8 @@ TOPOEVAL_PARAMETER_TABLE(
     real(TOPOEVAL_KEY(brokenness_wall_margin_m), "m",
          "a group's turn refined by ICP of the walls within clearance + this (0 = paper)",
          atLeast(0)),
+    flag(TOPOEVAL_KEY(brokenness_merge_by_walls),
+         "groups that the walls' transforms place alike are one part (needs the margin above)"),
     real(TOPOEVAL_KEY(pair_wall_margin_m), "m",
          "a pair's error measured by ICP of the walls within clearance + this (0 = vertices)",
          atLeast(0)),

@@ -350,7 +350,16 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                        double(n)
                  : 0.0;
     };
-    auto mergeSamePlacement = [&]
+    // The walls' refinement of a fit of `vs` (brokenness_wall_margin_m, below).
+    auto byWalls = [&](const std::vector<int>& vs, const Transform2D& fit)
+    {
+        std::vector<std::pair<int, int>> pairs;
+        for (int v : vs) pairs.emplace_back(v, partner[v]);
+        return refinedByWalls(gt, map, walls.gt(), walls.map(), pairs, fit, p);
+    };
+    // Groups whose transforms place them alike are merged; the merged group's transform is its
+    // vertices' fit, refined by its walls when the groups' transforms are (`walls_refined`).
+    auto mergeSamePlacement = [&](bool walls_refined)
     {
         for (bool merged = true; merged;)
         {
@@ -364,13 +373,14 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                     u.insert(u.end(), b.groups[j].gt_vertices.begin(),
                              b.groups[j].gt_vertices.end());
                     b.groups[i].transform = fitOf(u, &b.groups[i].squared_error_m2);
+                    if (walls_refined) b.groups[i].transform = byWalls(u, b.groups[i].transform);
                     b.groups[i].gt_vertices = std::move(u);
                     b.groups.erase(b.groups.begin() + static_cast<long>(j));
                     merged = true;
                 }
         }
     };
-    mergeSamePlacement();
+    mergeSamePlacement(false);
     // A vertex that a bigger part's transform places within the threshold belongs to that
     // part: near a break, leftovers of both sides plus a few wrong pairs can form a small group
     // with a compromise rotation. Bigger groups take such members; what falls below the
@@ -425,7 +435,7 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
             }
     for (auto& g : b.groups) g.transform = fitOf(g.gt_vertices, &g.squared_error_m2);
     // Without their outliers two groups of one part may now place it alike: merge again.
-    mergeSamePlacement();
+    mergeSamePlacement(false);
     // Small parts (ours): a part of 3-4 matched vertices is too small for the paper's rule, but
     // when its own fit is good and every counted group places its map vertices clearly
     // elsewhere (mean squared gap of at least brokenness_part_min_gap_m2), it is a part turned
@@ -459,12 +469,12 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     // groups are decided; only the reported transforms change (the squared error stays the
     // vertices' fit's, the paper's figure).
     if (p.brokenness_wall_margin_m > 0.0 && !b.groups.empty() && walls.ok())
-        for (auto& g : b.groups)
-        {
-            std::vector<std::pair<int, int>> pairs;
-            for (int v : g.gt_vertices) pairs.emplace_back(v, partner[v]);
-            g.transform = refinedByWalls(gt, map, walls.gt(), walls.map(), pairs, g.transform, p);
-        }
+    {
+        for (auto& g : b.groups) g.transform = byWalls(g.gt_vertices, g.transform);
+        // Ours: groups that their walls place alike are one part, kept apart by a compromise
+        // fit of their vertices (brokenness_merge_by_walls).
+        if (p.brokenness_merge_by_walls) mergeSamePlacement(true);
+    }
     std::stable_sort(b.groups.begin(), b.groups.end(),
                      [](const auto& x, const auto& y)
                      { return x.gt_vertices.size() > y.gt_vertices.size(); });
