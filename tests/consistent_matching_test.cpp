@@ -991,7 +991,11 @@ TEST(ConsistentMatching, AGroupOnlyDistancesVouchForIsRefused)
     };
     // Every brokenness group is one part of the building (part 1 stays unmatched: one break of
     // two is found).
-    for (const auto& of_group : partsOfGroups(r, partOf)) EXPECT_EQ(of_group.size(), 1u);
+    for (const auto& of_group : partsOfGroups(r, partOf))
+    {
+        EXPECT_EQ(of_group.size(), 1u);
+        EXPECT_FALSE(of_group.count(-1));
+    }
     EXPECT_EQ(r.brokenness.degree, 1);
     // Without the rule the chance group is matched and counted as a part turned 23 degrees.
     for (const auto& [g, m] : chance) EXPECT_EQ(r0.match.mapVertexOf(g), m) << g;

@@ -294,6 +294,7 @@ TEST(QualityEvaluator, GroupsThatTheirWallsPlaceAlikeAreOnePart)
         parts.insert(part);
     }
     EXPECT_EQ(parts, (std::set<int>{0, 1, 2}));
+    EXPECT_EQ(parts.size(), r.brokenness.groups.size());  // no part counted twice
     // Without the rule part 0 is two groups: a break too many.
     EXPECT_EQ(r0.brokenness.degree, 3);
     int of_part_0 = 0;

@@ -372,8 +372,13 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                     std::vector<int> u = b.groups[i].gt_vertices;
                     u.insert(u.end(), b.groups[j].gt_vertices.begin(),
                              b.groups[j].gt_vertices.end());
-                    b.groups[i].transform = fitOf(u, &b.groups[i].squared_error_m2);
-                    if (walls_refined) b.groups[i].transform = byWalls(u, b.groups[i].transform);
+                    double mse = 0.0;
+                    const Transform2D fit = fitOf(u, &mse);
+                    // Merged by their walls, the whole must still be one group by its vertices
+                    // (the paper's threshold), as every group the growth makes is.
+                    if (walls_refined && mse > p.brokenness_max_squared_error_m2) continue;
+                    b.groups[i].transform = walls_refined ? byWalls(u, fit) : fit;
+                    b.groups[i].squared_error_m2 = mse;
                     b.groups[i].gt_vertices = std::move(u);
                     b.groups.erase(b.groups.begin() + static_cast<long>(j));
                     merged = true;
@@ -466,8 +471,9 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
             b.groups.push_back(std::move(grp));
         }
     // Ours: each counted part's turn and shift from its walls (brokenness_wall_margin_m). The
-    // groups are decided; only the reported transforms change (the squared error stays the
-    // vertices' fit's, the paper's figure).
+    // groups are decided by their vertices; the reported transforms change (the squared error
+    // stays the vertices' fit's, the paper's figure), and only groups that the walls place
+    // alike merge.
     if (p.brokenness_wall_margin_m > 0.0 && !b.groups.empty() && walls.ok())
     {
         for (auto& g : b.groups) g.transform = byWalls(g.gt_vertices, g.transform);

@@ -3,7 +3,8 @@
 
 // Does a group's rigid fit put one map's walls on the other's, and do the walls pin that fit?
 // The check of a small further group whose attributes changed at a break (doc/matching.md,
-// "Walls of a small part").
+// "Walls of a small part"), and of the further groups the bridges and
+// min_unconfirmed_group_similarity ask it of.
 
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt_topoeval/TopologyGraph.h>

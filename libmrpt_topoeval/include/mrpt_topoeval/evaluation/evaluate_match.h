@@ -48,12 +48,13 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
      * vertices alone (then brokenness_merge_by_walls). 0 = the paper's vertex fit [m]. */
     double brokenness_wall_margin_m = 1.0;
     /** After that refinement, two groups whose walls' transforms put their vertices in the
-     * same places (the merge test of the vertices' fits, within brokenness_max_squared_error_m2)
-     * are one part: merged, and the whole refined by its walls again. Near a cut a group can
-     * keep two pairs of the neighbouring part, whose compromise fit keeps it apart from the
-     * rest of its own part (held-out multi_wing_3001/broken_2: two groups of one part, both
-     * turned -80.41 degrees by their walls, counted as a break). Needs
-     * brokenness_wall_margin_m > 0; false = membership by the vertices alone [bool]. */
+     * same places (step 5's merge test, within brokenness_max_squared_error_m2, applied to the
+     * walls' transforms) are one part: merged when the whole's vertex fit stays within that
+     * threshold, and the whole refined by its walls again. Near a cut a group can keep two
+     * pairs of the neighbouring part, whose compromise fit keeps it apart from the rest of its
+     * own part (held-out multi_wing_3001/broken_2: two groups of one part, both turned -80.41
+     * degrees by their walls, counted as a break). Needs brokenness_wall_margin_m > 0 and maps
+     * with walls; false = membership by the vertices alone [bool]. */
     bool brokenness_merge_by_walls = true;
     /** Each pair's error in relative accuracy and local consistency is measured at its walls:
      * the walls within the ground-truth vertex's clearance plus this margin and those within

@@ -189,7 +189,9 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * kind 0.33 and 0.49. The median of the candidates' similarity, the chance level of each
      * pair of maps, was measured too and refuses a true part of a building whose rooms are all
      * alike (candidates' median 0.99; doc/matching.md, "A group that only distances vouch
-     * for"). 0 turns the rule off [0..1]. */
+     * for"). With min_part_wall_agreement = 0, or maps without walls, no group's walls
+     * agree: every further group less similar than this is refused. 0 turns the rule off
+     * [0..1]. */
     double min_unconfirmed_group_similarity = 0.5;
     /** A further group smaller than min_group_vertices and less similar than
      * min_small_group_similarity (a part whose vertices' attributes changed at the cut: its
