@@ -801,15 +801,6 @@ TEST(ConsistentMatching, AFurnishedHallsRoomsAreMatchedByTheirWalls)
 
 namespace
 {
-// The ground truth and the map that the validator wrote for a corpus case (`--pictures`), kept
-// in tests/data/<folder>/<name>.{gt,map}.gridmap.
-std::pair<COccupancyGridMap2D, COccupancyGridMap2D> corpusCase(const std::string& folder,
-                                                               const std::string& name)
-{
-    const std::string base = testsDir() + "/data/" + folder + "/" + name;
-    return {loadMap(base + ".gt.gridmap").grid, loadMap(base + ".map.gridmap").grid};
-}
-
 // The parts that each brokenness group's pairs belong to, by the case's truth (partOf(gt, map):
 // the pair's part, -1 for a pair the truth does not have).
 std::vector<std::set<int>> partsOfGroups(const QualityReport& r,
@@ -823,6 +814,18 @@ std::vector<std::set<int>> partsOfGroups(const QualityReport& r,
         out.push_back(std::move(of_group));
     }
     return out;
+}
+
+// ... by a truth list of (gt, map) -> part.
+std::vector<std::set<int>> partsOfGroups(const QualityReport& r,
+                                         const std::map<std::pair<int, int>, int>& truth)
+{
+    return partsOfGroups(r,
+                         [&](int g, int m)
+                         {
+                             const auto t = truth.find({g, m});
+                             return t == truth.end() ? -1 : t->second;
+                         });
 }
 }  // namespace
 
@@ -938,13 +941,8 @@ TEST(ConsistentMatching, APartWhoseNeighbourMovedIsFoundByItsWalls)
     EXPECT_GE(r.match.pairs.size(), 20u);
     // Three parts, three brokenness groups of one part each.
     EXPECT_EQ(r.brokenness.degree, 2);
-    auto partOf = [&](int g, int m)
-    {
-        const auto t = truth.find({g, m});
-        return t == truth.end() ? -1 : t->second;
-    };
     std::set<int> parts;
-    for (const auto& of_group : partsOfGroups(r, partOf))
+    for (const auto& of_group : partsOfGroups(r, truth))
     {
         EXPECT_EQ(of_group.size(), 1u);
         parts.insert(*of_group.begin());
@@ -984,14 +982,9 @@ TEST(ConsistentMatching, AGroupOnlyDistancesVouchForIsRefused)
     for (const auto& p : r.match.pairs)
         EXPECT_TRUE(truth.count({p.ground_truth, p.map})) << p.ground_truth << " -> " << p.map;
     EXPECT_GE(r.match.pairs.size(), 28u);
-    auto partOf = [&](int g, int m)
-    {
-        const auto t = truth.find({g, m});
-        return t == truth.end() ? -1 : t->second;
-    };
     // Every brokenness group is one part of the building (part 1 stays unmatched: one break of
     // two is found).
-    for (const auto& of_group : partsOfGroups(r, partOf))
+    for (const auto& of_group : partsOfGroups(r, truth))
     {
         EXPECT_EQ(of_group.size(), 1u);
         EXPECT_FALSE(of_group.count(-1));
@@ -1000,7 +993,7 @@ TEST(ConsistentMatching, AGroupOnlyDistancesVouchForIsRefused)
     // Without the rule the chance group is matched and counted as a part turned 23 degrees.
     for (const auto& [g, m] : chance) EXPECT_EQ(r0.match.mapVertexOf(g), m) << g;
     bool chance_group = false;
-    for (const auto& of_group : partsOfGroups(r0, partOf))
+    for (const auto& of_group : partsOfGroups(r0, truth))
         chance_group = chance_group || of_group == std::set<int>{-1};
     EXPECT_TRUE(chance_group);
     EXPECT_EQ(r0.brokenness.degree, 2);

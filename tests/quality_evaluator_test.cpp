@@ -266,8 +266,7 @@ TEST(QualityEvaluator, GroupsOfOnePartMergeOnceTheirOutliersLeave)
 // the vertex merge leaves them apart, but the walls turn both by -80.41 degrees.
 TEST(QualityEvaluator, GroupsThatTheirWallsPlaceAlikeAreOnePart)
 {
-    const std::string base = testsDir() + "/data/merged_part/multi_wing_3001_broken_2";
-    const auto gt = loadMap(base + ".gt.gridmap").grid, map = loadMap(base + ".map.gridmap").grid;
+    const auto [gt, map] = corpusCase("merged_part", "multi_wing_3001_broken_2");
     const std::vector<double> turns = {-80.40, -96.39, -57.51};
     auto partOf = [&](const BrokennessGroup& g)
     {

@@ -1,6 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include "test_paths.h"
 
+#include <mrpt_topoeval/map_io.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -22,6 +23,13 @@ std::optional<std::string> sharedDataFile(const std::string& relative)
 std::string shareDir() { return TOPOEVAL_SHARE_DIR; }
 std::string testsDir() { return TOPOEVAL_TESTS_DIR; }
 std::string topoevalBin() { return TOPOEVAL_BIN; }
+
+std::pair<mrpt::maps::COccupancyGridMap2D, mrpt::maps::COccupancyGridMap2D> corpusCase(
+    const std::string& folder, const std::string& name)
+{
+    const std::string base = testsDir() + "/data/" + folder + "/" + name;
+    return {loadMap(base + ".gt.gridmap").grid, loadMap(base + ".map.gridmap").grid};
+}
 
 namespace
 {

@@ -1,8 +1,11 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #pragma once
 
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace mrpt_topoeval::testing
 {
@@ -12,6 +15,10 @@ std::optional<std::string> sharedDataFile(const std::string& relative);
 std::string shareDir();
 /** The project's `tests` folder (bad-input corpus under tests/data). */
 std::string testsDir();
+/** The ground truth and the map that the validator wrote for a corpus case (`--pictures`),
+ * kept in tests/data/<folder>/<name>.{gt,map}.gridmap. */
+std::pair<mrpt::maps::COccupancyGridMap2D, mrpt::maps::COccupancyGridMap2D> corpusCase(
+    const std::string& folder, const std::string& name);
 /** The built `topoeval` executable, empty if apps are not built. */
 std::string topoevalBin();
 /** A fresh empty temporary folder for one test (topoeval_test_TAG_PID_N in the system's temp

@@ -415,7 +415,9 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         double mse = 0.0;
         const Transform2D fit = fitOf(group, &mse);
         if (mse > p.max_group_squared_error_m2) return false;
-        // The walls' test of this group under its fit, made once (several rules ask for it).
+        // Its mean similarity, and the walls' test under its fit made once (several rules ask
+        // for each).
+        const double similarity = meanSimilarity(group);
         std::optional<bool> walls_confirm;
         auto wallsAgree = [&]
         {
@@ -473,7 +475,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             // neighbour pair, its walls agree and pin its fit (isolated_part_bridge;
             // doc/matching.md, "A part that touches no matched part").
             if (small && !bridge && !neighbour && p.isolated_part_bridge)
-                bridge = meanSimilarity(group) >= p.min_small_group_similarity;
+                bridge = similarity >= p.min_small_group_similarity;
             // A big group whose neighbour pairs the turn moved and whose pivot lies far from
             // the accepted groups (both parts turned, each about its own pivot) bridges when
             // its walls agree and pin its fit, as a small part's must (part_wall_bridge).
@@ -484,13 +486,12 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             // distances, which a hall's lattice or a symmetric building repeats
             // (min_unconfirmed_group_similarity; doc/matching.md, "A group that only distances
             // vouch for").
-            if (meanSimilarity(group) < p.min_unconfirmed_group_similarity && !wallsAgree())
-                return false;
+            if (similarity < p.min_unconfirmed_group_similarity && !wallsAgree()) return false;
         }
         if (int(group.size()) < p.min_group_vertices)
         {
             // As similar as a small graph's group must be (below).
-            if (meanSimilarity(group) < p.min_small_group_similarity && !wallsAgree()) return false;
+            if (similarity < p.min_small_group_similarity && !wallsAgree()) return false;
         }
         return true;
     };
