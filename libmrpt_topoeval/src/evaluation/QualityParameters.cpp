@@ -36,6 +36,8 @@ TOPOEVAL_PARAMETER_TABLE(
              }),
     real(TOPOEVAL_KEY(brokenness_part_min_gap_m2), "m^2",
          "... placed this far (mean sq.) from every counted group", above(0)),
+    flag(TOPOEVAL_KEY(brokenness_split_parts),
+         "a group whose two connected sets fit apart is two parts (false = paper)"),
     real(TOPOEVAL_KEY(brokenness_outlier_ratio), "ratio",
          "a member the others' fit places this x the threshold's root off leaves (0 = paper)",
          atLeast(0)),
