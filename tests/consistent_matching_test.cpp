@@ -998,3 +998,29 @@ TEST(ConsistentMatching, AGroupOnlyDistancesVouchForIsRefused)
     EXPECT_TRUE(chance_group);
     EXPECT_EQ(r0.brokenness.degree, 2);
 }
+
+TEST(ConsistentMatching, AFirstGroupWhosePairsWallsDisagreeIsRefused)
+{
+    // Two different column halls whose lattices share one bay (the validator's
+    // column_hall_7004/different, seed 7): a significant first group of 10 pairs, all false,
+    // too big for the first group's whole-group wall test (first_group_wall_check_pairs). The
+    // walls around each of its pairs disagree, under the group's fit and aligned where the pair
+    // is: with first_group_disagreeing_pair_share nothing is matched.
+    const auto [gt, map] = corpusCase("chance_first_group", "column_hall_7004_different");
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.first_group_disagreeing_pair_share = 0.0;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    EXPECT_TRUE(r.match.pairs.empty());
+    EXPECT_EQ(r.quality, 0.0);
+    // The message names the test and its key.
+    bool named = false;
+    for (const auto& m : r.match.messages)
+        named = named || (m.find("100 % of its pairs disagree") != std::string::npos &&
+                          m.find("first_group_disagreeing_pair_share") != std::string::npos);
+    EXPECT_TRUE(named);
+    // Without the rule the chance group is matched: coverage over the 0.1 a different building
+    // may have.
+    EXPECT_GE(r0.match.pairs.size(), 10u);
+    EXPECT_GT(r0.coverage, 0.1);
+}

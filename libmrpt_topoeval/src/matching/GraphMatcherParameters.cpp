@@ -108,6 +108,10 @@ TOPOEVAL_PARAMETER_TABLE(
          atLeast(0).atMost(1)),
     integer(TOPOEVAL_KEY(first_group_wall_check_pairs), "1",
             "consistent: ... a first group of fewer pairs than this", atLeast(0)),
+    real(TOPOEVAL_KEY(first_group_disagreeing_pair_share), "0..1",
+         "consistent: a first group is refused when this share of its pairs' walls disagree "
+         "(0: off)",
+         atLeast(0).atMost(1)),
     integer(TOPOEVAL_KEY(max_rival_placements), "count",
             "consistent: rival placements of the first group played out (0: off)",
             atLeast(0).atMost(16)),

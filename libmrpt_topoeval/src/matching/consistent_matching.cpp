@@ -394,6 +394,43 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
         return agreeAndPin(wallsOf(group, fit));
     };
+    // The share of a group's pairs (those with walls around both vertices) whose walls disagree
+    // where they are: under the group's fit, or failing that under an ICP of the pair's own
+    // walls from it (a drifted map's pair lies a few decimetres off one rigid fit of a big
+    // group), when it is at least first_group_disagreeing_pair_share; none otherwise. Stops
+    // once too many agree for it.
+    auto pairWallsDisagree = [&](const std::vector<int>& group) -> std::optional<double>
+    {
+        indexWalls();
+        const Transform2D fit = fitOf(group, nullptr);
+        const double size = double(group.size()), limit = p.first_group_disagreeing_pair_share;
+        int agree = 0, disagree = 0;
+        for (int i : group)
+        {
+            const std::vector<std::pair<int, int>> pair{{cands[i].gt, cands[i].map}};
+            auto agreesUnder = [&](const Transform2D& t)
+            {
+                return wallAgreement(gt, map, *gt_walls, *map_walls, pair, t, p.wall_margin_m,
+                                     wall_tolerance, 2.0);
+            };
+            const WallAgreement w = agreesUnder(fit);
+            if (!w.walls_on_both) continue;
+            bool agrees = w.share >= p.min_part_wall_agreement;
+            if (!agrees)
+            {
+                const auto walls_fit =
+                    alignWallsByIcp(gt, map, *gt_walls, *map_walls, pair, p.wall_margin_m, fit,
+                                    std::max(offBy(cands[i], fit), wall_tolerance));
+                agrees = walls_fit && agreesUnder(*walls_fit).share >= p.min_part_wall_agreement;
+            }
+            agrees ? ++agree : ++disagree;
+            // Fewer than `limit` of the counted pairs can disagree now, whatever the rest do.
+            if (double(agree) > (1.0 - limit) * size) return std::nullopt;
+        }
+        const int counted = agree + disagree;
+        if (counted == 0 || double(disagree) < limit * double(counted)) return std::nullopt;
+        return double(disagree) / double(counted);
+    };
     auto meanSimilarity = [&](const std::vector<int>& set)
     {
         double sum = 0.0;
@@ -672,10 +709,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         // a true first group also holds vertices off the line (rooms), and every
         // chance first group of corpus seeds 1-5 narrower than 0.25 m was one (0.08-0.13 m
         // wide; true ones 0.34 m and more; doc/matching.md, "A first group along one line").
-        double log_nfa = 0.0, wall_share = -1.0, width = -1.0;
+        double log_nfa = 0.0, wall_share = -1.0, width = -1.0, disagreeing = -1.0;
         auto significant = [&](const std::vector<int>& group)
         {
-            wall_share = width = -1.0;
+            wall_share = width = disagreeing = -1.0;
             if (int(group.size()) < p.min_group_vertices) return true;
             log_nfa = log10FalseAlarms(m, double(group.size()), density);
             if (log_nfa > std::log10(p.max_false_alarms)) return false;
@@ -685,6 +722,13 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 wall_share = wallsOf(group, fitOf(group, nullptr)).share;
                 if (wall_share < p.min_first_group_wall_agreement) return false;
             }
+            if (p.first_group_disagreeing_pair_share > 0.0)
+                if (const auto share = pairWallsDisagree(group))
+                {
+                    disagreeing = *share;
+                    wall_share = -1.0;  // the whole group's walls passed; its pairs' did not
+                    return false;
+                }
             const auto [a, b] = pointsOf(group);
             width = std::min(lineSpread(a), lineSpread(b));
             if (width < p.distance_tolerance_m) return false;
@@ -713,6 +757,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 out.refused_candidates = pool.size();
                 out.refused_wall_share = wall_share;
                 out.refused_width_m = width;
+                out.refused_disagreeing_pairs = disagreeing;
             }
         }
         if (ok && !first)

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -138,6 +139,13 @@ void matchConsistent(const TopologyGraph& ground_truth, const TopologyGraph& map
             refused("significant ") + "only a share of " + twoDigits(found.refused_wall_share) +
             " of the walls around it agree under its fit, less than [GraphMatcher] "
             "min_first_group_wall_agreement asks" +
+            too_little);
+    else if (found.refused_size > 0 && found.refused_disagreeing_pairs >= 0.0)
+        match.messages.push_back(
+            refused("significant ") + "the walls around " +
+            std::to_string(std::lround(100.0 * found.refused_disagreeing_pairs)) +
+            " % of its pairs disagree, each aligned where the pair is, at least [GraphMatcher] "
+            "first_group_disagreeing_pair_share" +
             too_little);
     else if (found.refused_size > 0)
         match.messages.push_back(

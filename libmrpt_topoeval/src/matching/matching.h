@@ -67,6 +67,9 @@ struct ConsistentMatch
     double refused_wall_share = -1.0;
     /** ... and its width across its line when that refused it (else -1) [m]. */
     double refused_width_m = -1.0;
+    /** ... or the share of its pairs whose walls disagree (first_group_disagreeing_pair_share),
+     * or -1 when not refused by that test. */
+    double refused_disagreeing_pairs = -1.0;
     /** Rival placements of the first group (the same part of the map placed elsewhere, each as
      * acceptable as a first group), their pairs (gt, map); rival_won: which one the returned
      * match was played out from (1-based), 0 for the maximum clique. */

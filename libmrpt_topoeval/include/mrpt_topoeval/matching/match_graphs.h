@@ -224,6 +224,17 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * similarity or significance), and big true groups of distorted SLAM maps have wall
      * shares down to 0.35 (a column hall's walls are its columns) [1]. */
     int first_group_wall_check_pairs = 10;
+    /** A significant first group of any size is refused when at least this share of its pairs
+     * (those with walls around both vertices) have walls that disagree where they are: each
+     * pair's walls (min_part_wall_agreement), under the group's fit or, failing that, under an
+     * ICP of that pair's own walls from it. A drifted SLAM map's big first group has walls that
+     * disagree under one rigid fit, which first_group_wall_check_pairs therefore does not ask
+     * of it, but each pair's walls agree once aligned where the pair is (true first groups of
+     * corpus seeds 1 and 7: 0.40 of their pairs disagreeing at most, a SLAM map 0.33); two
+     * buildings of one style whose chance group holds 10 pairs, two column halls of one bay,
+     * 1.00, and a 6-pair chance group of two multi-wing buildings 0.50 (doc/matching.md, "The
+     * walls of each pair of a first group"). 0 turns it off [0..1]. */
+    double first_group_disagreeing_pair_share = 0.5;
     /** Rival placements of the first group searched and, each as acceptable as a first group
      * (the same tests), played out to a whole match; the match whose pairs are the most similar
      * in sum is kept. In a building symmetric under a turn or a mirror the maximum clique is
