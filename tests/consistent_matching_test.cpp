@@ -975,12 +975,18 @@ TEST(ConsistentMatching, AGroupOnlyDistancesVouchForIsRefused)
         {{44, 33}, 0}, {{46, 43}, 0}, {{46, 46}, 0}, {{47, 63}, 0}, {{48, 58}, 0}, {{49, 13}, 0},
         {{50, 28}, 0}, {{51, 53}, 0}, {{52, 14}, 0}};
     const std::set<std::pair<int, int>> chance = {{24, 32}, {25, 24}, {28, 38}, {36, 42}, {37, 36}};
-    Parameters with = Parameters{}, without = Parameters{};
+    // The walls of its pairs refuse it too (further_group_disagreeing_pair_share, session 24):
+    // "without" turns both rules off, each rule alone refuses it.
+    Parameters with = Parameters{}, without = Parameters{}, by_pairs_walls = Parameters{};
     without.matcher.min_unconfirmed_group_similarity = 0.0;
+    without.matcher.further_group_disagreeing_pair_share = 0.0;
+    by_pairs_walls.matcher.min_unconfirmed_group_similarity = 0.0;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
-    for (const auto& p : r.match.pairs)
-        EXPECT_TRUE(truth.count({p.ground_truth, p.map})) << p.ground_truth << " -> " << p.map;
+    const QualityReport r1 = evaluate(gt, map, by_pairs_walls);
+    for (const QualityReport* q : {&r, &r1})
+        for (const auto& p : q->match.pairs)
+            EXPECT_TRUE(truth.count({p.ground_truth, p.map})) << p.ground_truth << " -> " << p.map;
     EXPECT_GE(r.match.pairs.size(), 28u);
     // Every brokenness group is one part of the building (part 1 stays unmatched: one break of
     // two is found).
@@ -990,7 +996,7 @@ TEST(ConsistentMatching, AGroupOnlyDistancesVouchForIsRefused)
         EXPECT_FALSE(of_group.count(-1));
     }
     EXPECT_EQ(r.brokenness.degree, 1);
-    // Without the rule the chance group is matched and counted as a part turned 23 degrees.
+    // Without the rules the chance group is matched and counted as a part turned 23 degrees.
     for (const auto& [g, m] : chance) EXPECT_EQ(r0.match.mapVertexOf(g), m) << g;
     bool chance_group = false;
     for (const auto& of_group : partsOfGroups(r0, truth))
@@ -1023,4 +1029,49 @@ TEST(ConsistentMatching, AFirstGroupWhosePairsWallsDisagreeIsRefused)
     // may have.
     EXPECT_GE(r0.match.pairs.size(), 10u);
     EXPECT_GT(r0.coverage, 0.1);
+}
+
+TEST(ConsistentMatching, AFurtherGroupWhosePairsWallsDisagreeIsRefused)
+{
+    // A building cut in three (the validator's multi_wing_8004/broken_2, seed 8) whose third
+    // part is a wing symmetric under a half turn. Its half-turned placement (5 pairs, mean
+    // similarity 0.62, bridged to the accepted parts) keeps its distances and its vertices'
+    // attributes, but the walls around its pairs disagree where they are: with
+    // further_group_disagreeing_pair_share the wing is placed right.
+    const auto [gt, map] = corpusCase("symmetric_part", "multi_wing_8004_broken_2");
+    const std::map<int, int> right = {{0, 8}, {2, 14}, {5, 9}, {10, 17}};
+    const std::map<int, int> turned = {{0, 17}, {2, 9}, {5, 14}, {10, 8}};
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.further_group_disagreeing_pair_share = 0.0;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    // Vertex 10, a dead end at the cut, is left unmatched; the others take their true partners.
+    for (const auto& [g, m] : right)
+    {
+        if (g == 10) continue;
+        EXPECT_EQ(r.match.mapVertexOf(g), m) << g;
+    }
+    for (const auto& [g, m] : turned)
+    {
+        EXPECT_NE(r.match.mapVertexOf(g), m) << g;
+        EXPECT_EQ(r0.match.mapVertexOf(g), m) << g;
+    }
+    // Both find the three parts, but without the rule the wing's group is turned half round.
+    const std::vector<double> turns = {-75.27, -90.07, -53.56};
+    auto worstTurnError = [&](const QualityReport& q)
+    {
+        double worst = 0.0;
+        for (const auto& grp : q.brokenness.groups)
+        {
+            double best = 360.0;
+            for (double t : turns)
+                best = std::min(best, std::abs(std::remainder(grp.transform.yaw_deg - t, 360.0)));
+            worst = std::max(worst, best);
+        }
+        return worst;
+    };
+    EXPECT_EQ(r.brokenness.degree, 2);
+    EXPECT_EQ(r0.brokenness.degree, 2);
+    EXPECT_LT(worstTurnError(r), 3.0);
+    EXPECT_GT(worstTurnError(r0), 90.0);
 }

@@ -112,6 +112,8 @@ TOPOEVAL_PARAMETER_TABLE(
          "consistent: a first group is refused when this share of its pairs' walls disagree "
          "(0: off)",
          atLeast(0).atMost(1)),
+    real(TOPOEVAL_KEY(further_group_disagreeing_pair_share), "0..1",
+         "consistent: ... and a further group likewise (0: off)", atLeast(0).atMost(1)),
     integer(TOPOEVAL_KEY(max_rival_placements), "count",
             "consistent: rival placements of the first group played out (0: off)",
             atLeast(0).atMost(16)),

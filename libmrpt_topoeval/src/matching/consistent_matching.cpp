@@ -397,13 +397,13 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // The share of a group's pairs (those with walls around both vertices) whose walls disagree
     // where they are: under the group's fit, or failing that under an ICP of the pair's own
     // walls from it (a drifted map's pair lies a few decimetres off one rigid fit of a big
-    // group), when it is at least first_group_disagreeing_pair_share; none otherwise. Stops
-    // once too many agree for it.
-    auto pairWallsDisagree = [&](const std::vector<int>& group) -> std::optional<double>
+    // group), when it is at least `limit`; none otherwise. Stops once too many agree for it.
+    auto pairWallsDisagree = [&](const std::vector<int>& group,
+                                 double limit) -> std::optional<double>
     {
         indexWalls();
         const Transform2D fit = fitOf(group, nullptr);
-        const double size = double(group.size()), limit = p.first_group_disagreeing_pair_share;
+        const double size = double(group.size());
         int agree = 0, disagree = 0;
         for (int i : group)
         {
@@ -530,6 +530,14 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             // As similar as a small graph's group must be (below).
             if (similarity < p.min_small_group_similarity && !wallsAgree()) return false;
         }
+        // A further group half of whose pairs have walls that disagree where they are, as a
+        // first group is refused for (further_group_disagreeing_pair_share; doc/matching.md,
+        // "The walls of each pair of a further group"): a wing of a symmetric building placed
+        // by its symmetry, its vertices alike and its distances kept. Asked last: it may cost an
+        // ICP per pair.
+        if (!out.cores.empty() && p.further_group_disagreeing_pair_share > 0.0 &&
+            pairWallsDisagree(group, p.further_group_disagreeing_pair_share))
+            return false;
         return true;
     };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
@@ -723,7 +731,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 if (wall_share < p.min_first_group_wall_agreement) return false;
             }
             if (p.first_group_disagreeing_pair_share > 0.0)
-                if (const auto share = pairWallsDisagree(group))
+                if (const auto share =
+                        pairWallsDisagree(group, p.first_group_disagreeing_pair_share))
                 {
                     disagreeing = *share;
                     wall_share = -1.0;  // the whole group's walls passed; its pairs' did not
