@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <set>
@@ -394,10 +395,38 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
         return agreeAndPin(wallsOf(group, fit));
     };
+    // Whether a pair's walls agree where it is, made once per pair: under the fit of the first
+    // group that asks or, failing that, under an ICP of the pair's own walls from it (a drifted
+    // map's pair lies a few decimetres off one rigid fit of a big group); -1 without walls
+    // around both vertices. Every group the consensus proposes asks again, and the groups that
+    // hold one pair place it alike, within the ICP's reach.
+    std::map<std::size_t, int> pair_walls;
+    auto pairWallsAgree = [&](int i, const Transform2D& fit)
+    {
+        const auto [known, fresh] = pair_walls.emplace(pairKey(cands[i]), -1);
+        if (!fresh) return known->second;
+        const std::vector<std::pair<int, int>> pair{{cands[i].gt, cands[i].map}};
+        auto agreesUnder = [&](const Transform2D& t)
+        {
+            return wallAgreement(gt, map, *gt_walls, *map_walls, pair, t, p.wall_margin_m,
+                                 wall_tolerance, 2.0);
+        };
+        const WallAgreement w = agreesUnder(fit);
+        if (!w.walls_on_both) return known->second;
+        bool agrees = w.share >= p.min_part_wall_agreement;
+        if (!agrees)
+        {
+            const auto walls_fit =
+                alignWallsByIcp(gt, map, *gt_walls, *map_walls, pair, p.wall_margin_m, fit,
+                                std::max(offBy(cands[i], fit), wall_tolerance));
+            agrees = walls_fit && agreesUnder(*walls_fit).share >= p.min_part_wall_agreement;
+        }
+        known->second = agrees ? 1 : 0;
+        return known->second;
+    };
     // The share of a group's pairs (those with walls around both vertices) whose walls disagree
-    // where they are: under the group's fit, or failing that under an ICP of the pair's own
-    // walls from it (a drifted map's pair lies a few decimetres off one rigid fit of a big
-    // group), when it is at least `limit`; none otherwise. Stops once too many agree for it.
+    // where they are (pairWallsAgree), when it is at least `limit`; none otherwise. Stops once
+    // too many agree for it.
     auto pairWallsDisagree = [&](const std::vector<int>& group,
                                  double limit) -> std::optional<double>
     {
@@ -407,22 +436,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         int agree = 0, disagree = 0;
         for (int i : group)
         {
-            const std::vector<std::pair<int, int>> pair{{cands[i].gt, cands[i].map}};
-            auto agreesUnder = [&](const Transform2D& t)
-            {
-                return wallAgreement(gt, map, *gt_walls, *map_walls, pair, t, p.wall_margin_m,
-                                     wall_tolerance, 2.0);
-            };
-            const WallAgreement w = agreesUnder(fit);
-            if (!w.walls_on_both) continue;
-            bool agrees = w.share >= p.min_part_wall_agreement;
-            if (!agrees)
-            {
-                const auto walls_fit =
-                    alignWallsByIcp(gt, map, *gt_walls, *map_walls, pair, p.wall_margin_m, fit,
-                                    std::max(offBy(cands[i], fit), wall_tolerance));
-                agrees = walls_fit && agreesUnder(*walls_fit).share >= p.min_part_wall_agreement;
-            }
+            const int agrees = pairWallsAgree(i, fit);
+            if (agrees < 0) continue;
             agrees ? ++agree : ++disagree;
             // Fewer than `limit` of the counted pairs can disagree now, whatever the rest do.
             if (double(agree) > (1.0 - limit) * size) return std::nullopt;
@@ -530,14 +545,6 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             // As similar as a small graph's group must be (below).
             if (similarity < p.min_small_group_similarity && !wallsAgree()) return false;
         }
-        // A further group half of whose pairs have walls that disagree where they are, as a
-        // first group is refused for (further_group_disagreeing_pair_share; doc/matching.md,
-        // "The walls of each pair of a further group"): a wing of a symmetric building placed
-        // by its symmetry, its vertices alike and its distances kept. Asked last: it may cost an
-        // ICP per pair.
-        if (!out.cores.empty() && p.further_group_disagreeing_pair_share > 0.0 &&
-            pairWallsDisagree(group, p.further_group_disagreeing_pair_share))
-            return false;
         return true;
     };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
@@ -649,8 +656,19 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 if (!settle(kept)) continue;
                 double err_sum = 0.0;
                 for (int k : kept) err_sum += offBy(cands[k], T);
-                if (kept.size() > best.size() || (kept.size() == best.size() && err_sum < best_err))
-                    best = std::move(kept), best_err = err_sum;
+                if (!(kept.size() > best.size() ||
+                      (kept.size() == best.size() && err_sum < best_err)))
+                    continue;
+                // A further group half of whose pairs have walls that disagree where they are,
+                // as a first group is refused for (further_group_disagreeing_pair_share;
+                // doc/matching.md, "The walls of each pair of a further group"): a wing of a
+                // symmetric building placed by its symmetry, its vertices alike and its
+                // distances kept. Asked only of a group that would be the best so far: it may
+                // cost an ICP per pair.
+                if (!out.cores.empty() && p.further_group_disagreeing_pair_share > 0.0 &&
+                    pairWallsDisagree(kept, p.further_group_disagreeing_pair_share))
+                    continue;
+                best = std::move(kept), best_err = err_sum;
             }
         return best;
     };
