@@ -266,6 +266,7 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     // would not absorb it) and the two fits lower the squared error by more than chance (F
     // test, 95 %, of 3 more parameters against 2n - 6 degrees of freedom); each set is then
     // split again.
+    std::vector<int> index_of(gt.vertices.size(), -1);  // a vertex's place in the set split
     auto splitIntoParts = [&](const std::vector<int>& vs)
     {
         std::vector<std::vector<int>> done, todo{vs};
@@ -274,13 +275,13 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
             std::vector<int> cur = std::move(todo.back());
             todo.pop_back();
             const auto [cg, cm] = pointsOf(cur);
+            // Each member's neighbours among the members, as indices into `cur`.
+            for (std::size_t i = 0; i < cur.size(); ++i) index_of[cur[i]] = static_cast<int>(i);
             std::vector<std::vector<int>> links(cur.size());
             for (std::size_t i = 0; i < cur.size(); ++i)
                 for (int w : neighbours(cur[i]))
-                {
-                    const auto at = std::find(cur.begin(), cur.end(), w);
-                    if (at != cur.end()) links[i].push_back(static_cast<int>(at - cur.begin()));
-                }
+                    if (index_of[w] >= 0) links[i].push_back(index_of[w]);
+            for (int v : cur) index_of[v] = -1;
             const auto split = internal::bestRigidSplit(
                 cg, cm, links, p.brokenness_min_part_vertices, p.brokenness_min_vertices,
                 p.brokenness_max_squared_error_m2);
@@ -407,8 +408,7 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
             }
             BrokennessGroup g;
             g.gt_vertices = part;
-            const auto [gp, gm] = pointsOf(part);
-            g.transform = internal::hornAlign(gp, gm, &g.squared_error_m2);
+            g.transform = fitOf(part, &g.squared_error_m2);
             for (int v : part)
             {
                 taken[v] = 1;

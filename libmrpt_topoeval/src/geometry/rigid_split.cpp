@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <numeric>
 #include <set>
 
 #include "geometry/horn.h"
@@ -87,14 +86,11 @@ std::optional<RigidSplit> bestRigidSplit(const std::vector<Eigen::Vector2d>& gt,
         {
             // Two local fits that place their own pairs alike propose no split.
             double gap = 0.0;
-            for (int i : near[std::size_t(s)])
-                gap += (local[std::size_t(s)].apply(map[std::size_t(i)]) -
-                        local[std::size_t(t)].apply(map[std::size_t(i)]))
-                           .squaredNorm();
-            for (int i : near[std::size_t(t)])
-                gap += (local[std::size_t(s)].apply(map[std::size_t(i)]) -
-                        local[std::size_t(t)].apply(map[std::size_t(i)]))
-                           .squaredNorm();
+            for (int u : {s, t})
+                for (int i : near[std::size_t(u)])
+                    gap += (local[std::size_t(s)].apply(map[std::size_t(i)]) -
+                            local[std::size_t(t)].apply(map[std::size_t(i)]))
+                               .squaredNorm();
             if (gap / double(2 * k) <= min_gap_m2) continue;
             Transform2D fit[2] = {local[std::size_t(s)], local[std::size_t(t)]};
             std::vector<int> side(static_cast<std::size_t>(n), 0);

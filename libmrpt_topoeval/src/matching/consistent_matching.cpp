@@ -390,6 +390,21 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         return wallAgreement(gt, map, *gt_walls, *map_walls, pairs, fit, p.wall_margin_m,
                              wall_tolerance);
     };
+    // One pair's walls: their agreement under a transform (pinning asked when
+    // pinning_from_share <= 1), and their ICP alignment from a transform, reaching as far as
+    // the pair's error under it or the wall tolerance.
+    auto pairWallsUnder = [&](int a, int b, const Transform2D& t, double pinning_from_share)
+    {
+        indexWalls();
+        return wallAgreement(gt, map, *gt_walls, *map_walls, {{a, b}}, t, p.wall_margin_m,
+                             wall_tolerance, pinning_from_share);
+    };
+    auto pairWallsByIcp = [&](int a, int b, const Transform2D& start, double error)
+    {
+        indexWalls();
+        return alignWallsByIcp(gt, map, *gt_walls, *map_walls, {{a, b}}, p.wall_margin_m, start,
+                               std::max(error, wall_tolerance));
+    };
     auto wallsConfirm = [&](const std::vector<int>& group, const Transform2D& fit)
     {
         if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
@@ -405,21 +420,15 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     {
         const auto [known, fresh] = pair_walls.emplace(pairKey(cands[i]), -1);
         if (!fresh) return known->second;
-        const std::vector<std::pair<int, int>> pair{{cands[i].gt, cands[i].map}};
-        auto agreesUnder = [&](const Transform2D& t)
-        {
-            return wallAgreement(gt, map, *gt_walls, *map_walls, pair, t, p.wall_margin_m,
-                                 wall_tolerance, 2.0);
-        };
-        const WallAgreement w = agreesUnder(fit);
+        const int a = cands[i].gt, b = cands[i].map;
+        const WallAgreement w = pairWallsUnder(a, b, fit, 2.0);
         if (!w.walls_on_both) return known->second;
         bool agrees = w.share >= p.min_part_wall_agreement;
         if (!agrees)
         {
-            const auto walls_fit =
-                alignWallsByIcp(gt, map, *gt_walls, *map_walls, pair, p.wall_margin_m, fit,
-                                std::max(offBy(cands[i], fit), wall_tolerance));
-            agrees = walls_fit && agreesUnder(*walls_fit).share >= p.min_part_wall_agreement;
+            const auto walls_fit = pairWallsByIcp(a, b, fit, offBy(cands[i], fit));
+            agrees = walls_fit &&
+                     pairWallsUnder(a, b, *walls_fit, 2.0).share >= p.min_part_wall_agreement;
         }
         known->second = agrees ? 1 : 0;
         return known->second;
@@ -985,26 +994,18 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                     // The walls decide: aligned by ICP from the fit (which, made of pairs up to
                     // growing_radius_m away, may put a room a few decimetres off), they must
                     // still put the partner within the pair's tolerance, agree and pin.
-                    indexWalls();
-                    const std::vector<std::pair<int, int>> pair{{pr.gt, pr.map}};
-                    const auto walls_fit =
-                        alignWallsByIcp(gt, map, *gt_walls, *map_walls, pair, p.wall_margin_m,
-                                        pr.fit, std::max(pr.error, wall_tolerance));
+                    const auto walls_fit = pairWallsByIcp(pr.gt, pr.map, pr.fit, pr.error);
                     if (!walls_fit ||
                         (pg(pr.gt) - walls_fit->apply(pm(pr.map))).norm() > pr.tolerance ||
-                        !agreeAndPin(wallAgreement(gt, map, *gt_walls, *map_walls, pair, *walls_fit,
-                                                   p.wall_margin_m, wall_tolerance,
-                                                   p.min_part_wall_agreement)))
+                        !agreeAndPin(
+                            pairWallsUnder(pr.gt, pr.map, *walls_fit, p.min_part_wall_agreement)))
                         continue;
                 }
                 else if (check_walls)
                 {
-                    indexWalls();
                     // The share only (its pinning is not asked: pinning_from_share above 1).
                     // Walls on one side only (a vertex bounded by unexplored space) say nothing.
-                    const WallAgreement w =
-                        wallAgreement(gt, map, *gt_walls, *map_walls, {{pr.gt, pr.map}}, pr.fit,
-                                      p.wall_margin_m, wall_tolerance, 2.0);
+                    const WallAgreement w = pairWallsUnder(pr.gt, pr.map, pr.fit, 2.0);
                     if (w.walls_on_both && w.share < p.min_grown_wall_agreement) continue;
                 }
                 ctx.gt_to_map[pr.gt] = pr.map;
