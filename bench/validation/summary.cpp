@@ -158,8 +158,17 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
         if (r->spec.kind == "crop" && s.gt_vertices)
         {
             ++crops;
-            a.mean_coverage_error +=
+            const double error =
                 std::abs(s.coverage - static_cast<double>(s.gt_with_counterpart) / s.gt_vertices);
+            a.mean_coverage_error += error;
+            if (a.max_coverage_error_case.empty() || error > a.max_coverage_error)
+                a.max_coverage_error = error, a.max_coverage_error_case = r->spec.id;
+            if (s.gt_with_counterpart >= 3)
+            {
+                ++a.observable_crops;
+                a.observable_crops_within += error <= kCropCoverageTolerance ? 1 : 0;
+                a.max_observable_coverage_error = std::max(a.max_observable_coverage_error, error);
+            }
         }
     }
     const std::size_t ok = a.cases - a.errors;
@@ -347,7 +356,11 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
     for (const auto& a : s.kinds)
         if (a.name == "crop")
             o << "\ncrop: mean |coverage - share of ground-truth vertices kept| = "
-              << num(a.mean_coverage_error) << "\n";
+              << num(a.mean_coverage_error) << ", max " << num(a.max_coverage_error) << " ("
+              << a.max_coverage_error_case << "); of the " << a.observable_crops
+              << " crops that keep 3 or more ground-truth vertices with a counterpart, "
+              << a.observable_crops_within << " within " << num(kCropCoverageTolerance) << ", max "
+              << num(a.max_observable_coverage_error) << "\n";
     o << "\nreal pairs           truth  matched   true  prec recall counterp  cov  quality broken"
          "  time_ms\n";
     for (const auto& r : results)

@@ -47,6 +47,14 @@ struct Aggregate
     std::map<std::string, std::size_t> broken_causes;
     double mean_coverage = 0.0, max_coverage = 0.0, mean_quality = 0.0;
     double mean_coverage_error = 0.0;  //!< Crops: mean |coverage - share with counterpart|.
+    /** Crops: the largest |coverage - share with counterpart| and its case; and the largest over
+     * the crops that keep at least 3 ground-truth vertices with a counterpart (the fewest a
+     * group holds: with fewer, no matcher that asks a group for its pairs can match the share),
+     * with how many crops those are and how many are within kCropCoverageTolerance. */
+    double max_coverage_error = 0.0;
+    std::string max_coverage_error_case;
+    double max_observable_coverage_error = 0.0;
+    std::size_t observable_crops = 0, observable_crops_within = 0;
     double mean_time_ms = 0.0;
 };
 
@@ -60,6 +68,9 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
  * counterparts matched), "a part with 1-2 pairs", "a part inside another's group" (3 or more
  * true pairs, but no group of its own). */
 std::string brokenCause(const CaseScore& s);
+
+/** Issue 11's crop target: coverage within this of the share of ground-truth vertices kept. */
+constexpr double kCropCoverageTolerance = 0.15;
 
 /** Two maps whose measured distortion differs by less than this are not ordered by it [m]: one
  * cell of the generated maps (0.05 m). Session 12 found every inversion of the angled and
