@@ -22,8 +22,10 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
+#include <random>
 #include <set>
 
 #include "../libmrpt_topoeval/src/geometry/horn.h"
@@ -742,6 +744,52 @@ TEST(ConsistentMatching, WallsOfASmallPartAgreeAndPinItsFit)
     const auto no_walls = internal::wallAgreement(bare, bare, empty, empty, pair, none, 1.0, 0.15);
     EXPECT_EQ(no_walls.share, 0.0);
     EXPECT_FALSE(no_walls.walls_on_both);
+}
+
+TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
+{
+    // near() answers from its cells (a cell holding a wall point) before it searches, and
+    // around() keeps what it found per vertex: both must say what a look at every wall point
+    // says, at every radius, for points on, near and far from the walls and outside them all.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> along(-10.0f, 10.0f), jitter(-0.03f, 0.03f);
+    std::vector<Eigen::Vector2f> walls;
+    for (int k = 0; k < 3000; ++k)
+    {
+        const float t = along(rng);
+        walls.emplace_back(t, 0.5f * t + jitter(rng));                     // a sloped wall
+        if (k % 3 == 0) walls.emplace_back(4.0f + jitter(rng), 0.5f * t);  // a short upright one
+    }
+    const internal::WallIndex index(walls);
+    auto nearest = [&](const Eigen::Vector2d& p)
+    {
+        double best = std::numeric_limits<double>::infinity();
+        for (const auto& q : walls) best = std::min(best, (q.cast<double>() - p).norm());
+        return best;
+    };
+    std::uniform_real_distribution<double> anywhere(-14.0, 14.0);
+    int near_answers = 0;
+    for (const double r : {0.05, 0.15, 0.6})
+        for (int k = 0; k < 4000; ++k)
+        {
+            const Eigen::Vector2d p(anywhere(rng), anywhere(rng));
+            const double d = nearest(p);
+            // A point a hair from the radius may fall either way in the search's floats.
+            if (std::abs(d - r) < 1e-4) continue;
+            EXPECT_EQ(index.near(p, r), d <= r) << "r " << r << " at " << p.transpose();
+            near_answers += d <= r;
+        }
+    EXPECT_GT(near_answers, 200);  // the shortcut was asked, not only the far points
+    // around(): the points within r, the same each time it is asked.
+    const Eigen::Vector2d p(1.0, 0.4);
+    const std::vector<Eigen::Vector2d> first = index.around(3, p, 1.5);
+    std::size_t within = 0;
+    for (const auto& q : walls) within += (q.cast<double>() - p).norm() <= 1.5;
+    EXPECT_EQ(first.size(), within);
+    EXPECT_EQ(index.around(3, p, 1.5), first);
+    EXPECT_GT(index.around(4, p, 3.0).size(), first.size());
+    EXPECT_TRUE(internal::WallIndex({}).around(0, p, 1.0).empty());
+    EXPECT_FALSE(internal::WallIndex({}).near(p, 1.0));
 }
 
 TEST(ConsistentMatching, AFurnishedHallsRoomsAreMatchedByTheirWalls)

@@ -17,19 +17,62 @@ WallIndex::WallIndex(const std::vector<Eigen::Vector2f>& points)
     m_points.kdTreeEnsureIndexBuilt2D();
 }
 
-bool WallIndex::near(const Eigen::Vector2d& p, double r) const
+namespace
 {
-    return !empty() &&
-           m_points.kdTreeClosestPoint2DsqrError(float(p.x()), float(p.y())) <= float(r * r);
+/** Cells of near()'s shortcut at most: beyond, the KD-tree answers alone (a few MB). */
+constexpr long kMaxNearCells = 1 << 24;
+}  // namespace
+
+const WallIndex::Cells& WallIndex::cellsFor(double r) const
+{
+    const auto [at, fresh] = m_cells.try_emplace(r);
+    Cells& c = at->second;
+    if (!fresh || empty() || !(r > 0.0)) return c;
+    const auto& xs = m_points.getPointsBufferRef_x();
+    const auto& ys = m_points.getPointsBufferRef_y();
+    const auto [x0, x1] = std::minmax_element(xs.begin(), xs.end());
+    const auto [y0, y1] = std::minmax_element(ys.begin(), ys.end());
+    const double size = r / (2.0 * std::sqrt(2.0));
+    const long nx = long((*x1 - *x0) / size) + 1, ny = long((*y1 - *y0) / size) + 1;
+    if (nx * ny > kMaxNearCells) return c;
+    c.size = size;
+    c.origin = {*x0, *y0};
+    c.nx = nx, c.ny = ny;
+    c.held.assign(std::size_t(nx * ny), 0);
+    for (std::size_t i = 0; i < xs.size(); ++i)
+    {
+        const long ix = std::min(nx - 1, long((xs[i] - c.origin.x()) / size));
+        const long iy = std::min(ny - 1, long((ys[i] - c.origin.y()) / size));
+        c.held[std::size_t(iy * nx + ix)] = 1;
+    }
+    return c;
 }
 
-void WallIndex::collect(const Eigen::Vector2d& p, double r, std::vector<Eigen::Vector2d>& out) const
+bool WallIndex::near(const Eigen::Vector2d& p, double r) const
 {
+    if (empty()) return false;
+    const Cells& c = cellsFor(r);
+    if (c.size > 0.0)
+    {
+        const double fx = (p.x() - c.origin.x()) / c.size, fy = (p.y() - c.origin.y()) / c.size;
+        if (fx >= 0.0 && fy >= 0.0 && fx < double(c.nx) && fy < double(c.ny) &&
+            c.held[std::size_t(long(fy) * c.nx + long(fx))])
+            return true;
+    }
+    return m_points.kdTreeClosestPoint2DsqrError(float(p.x()), float(p.y())) <= float(r * r);
+}
+
+const std::vector<Eigen::Vector2d>& WallIndex::around(int vertex, const Eigen::Vector2d& p,
+                                                      double r) const
+{
+    const auto [at, fresh] = m_around.try_emplace({vertex, r});
+    if (!fresh) return at->second;
     std::vector<nanoflann::ResultItem<std::size_t, float>> found;
     m_points.kdTreeRadiusSearch2D(float(p.x()), float(p.y()), float(r * r), found);
     const auto& xs = m_points.getPointsBufferRef_x();
     const auto& ys = m_points.getPointsBufferRef_y();
-    for (const auto& f : found) out.emplace_back(xs[f.first], ys[f.first]);
+    for (const auto& f : found) at->second.emplace_back(xs[f.first], ys[f.first]);
+    return at->second;
 }
 
 namespace
@@ -44,7 +87,11 @@ std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex
 {
     std::vector<Eigen::Vector2d> pts;
     for (int v : vertices)
-        walls.collect(g.vertices[v].position_m, g.vertices[v].clearance_m + margin_m, pts);
+    {
+        const auto& near =
+            walls.around(v, g.vertices[v].position_m, g.vertices[v].clearance_m + margin_m);
+        pts.insert(pts.end(), near.begin(), near.end());
+    }
     auto less = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b)
     { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
     std::sort(pts.begin(), pts.end(), less);

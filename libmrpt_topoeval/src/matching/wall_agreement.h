@@ -10,6 +10,8 @@
 #include <mrpt_topoeval/TopologyGraph.h>
 #include <mrpt_topoeval/geometry/Transform2D.h>
 
+#include <cstdint>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -24,12 +26,29 @@ public:
     explicit WallIndex(const std::vector<Eigen::Vector2f>& points);
     /** True if a wall point lies within r of p. */
     bool near(const Eigen::Vector2d& p, double r) const;
-    /** Appends the wall points within r of p to out. */
-    void collect(const Eigen::Vector2d& p, double r, std::vector<Eigen::Vector2d>& out) const;
+    /** The wall points within r of p, a vertex of the graph whose walls these are; searched
+     * once per vertex and radius: the matcher and the evaluation ask for one vertex's walls
+     * many times (every group, pair test and ICP that holds it). */
+    const std::vector<Eigen::Vector2d>& around(int vertex, const Eigen::Vector2d& p,
+                                               double r) const;
     bool empty() const { return m_points.empty(); }
 
 private:
     mrpt::maps::CSimplePointsMap m_points;
+    mutable std::map<std::pair<int, double>, std::vector<Eigen::Vector2d>> m_around;
+    /** For near(p, r): the cells, r / (2 sqrt 2) wide, that hold a wall point. A point in such
+     * a cell lies within r / 2 of it, so near() answers without a search; elsewhere the
+     * KD-tree decides. Made once per r (a wall agreement asks it of hundreds of points, each
+     * under nine shifts of the fit). */
+    struct Cells
+    {
+        double size = 0.0;
+        Eigen::Vector2d origin{0.0, 0.0};
+        long nx = 0, ny = 0;
+        std::vector<std::uint8_t> held;
+    };
+    mutable std::map<double, Cells> m_cells;
+    const Cells& cellsFor(double r) const;
 };
 
 /** How well the walls around a group agree under its rigid fit. */
