@@ -780,6 +780,11 @@ TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
             near_answers += d <= r;
         }
     EXPECT_GT(near_answers, 200);  // the shortcut was asked, not only the far points
+    // Radii too small for cells (their count would overflow) or bigger than the walls' extent.
+    const Eigen::Vector2d on_wall = walls[10].cast<double>();
+    EXPECT_TRUE(index.near(on_wall, 1e-12));
+    EXPECT_FALSE(index.near(on_wall + Eigen::Vector2d(0.0, 1e-3), 1e-12));
+    EXPECT_TRUE(index.near(Eigen::Vector2d(500.0, -500.0), 1e6));
     // around(): the points within r, the same each time it is asked.
     const Eigen::Vector2d p(1.0, 0.4);
     const std::vector<Eigen::Vector2d> first = index.around(3, p, 1.5);

@@ -33,8 +33,11 @@ const WallIndex::Cells& WallIndex::cellsFor(double r) const
     const auto [x0, x1] = std::minmax_element(xs.begin(), xs.end());
     const auto [y0, y1] = std::minmax_element(ys.begin(), ys.end());
     const double size = r / (2.0 * std::sqrt(2.0));
-    const long nx = long((*x1 - *x0) / size) + 1, ny = long((*y1 - *y0) / size) + 1;
-    if (nx * ny > kMaxNearCells) return c;
+    // Counted in doubles first: a tiny radius must not overflow the cell count.
+    const double cols = std::floor((*x1 - *x0) / size) + 1.0;
+    const double rows = std::floor((*y1 - *y0) / size) + 1.0;
+    if (!(cols * rows <= double(kMaxNearCells))) return c;
+    const long nx = long(cols), ny = long(rows);
     c.size = size;
     c.origin = {*x0, *y0};
     c.nx = nx, c.ny = ny;

@@ -19,7 +19,8 @@
 namespace mrpt_topoeval::internal
 {
 /** A graph's wall points in MRPT's KD-tree (`CSimplePointsMap`, nanoflann), for "is there a wall
- * point within r of p" and "the wall points within r of p". */
+ * point within r of p" and "the wall points within r of p". It keeps what it found (near()'s
+ * cells, around()'s points), so one index is not for concurrent use: each match makes its own. */
 class WallIndex
 {
 public:
