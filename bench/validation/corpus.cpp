@@ -85,6 +85,9 @@ void addVariants(Corpus& corpus, std::size_t gi, std::size_t other, bool generat
 Corpus buildCorpus(const CorpusOptions& opts)
 {
     Corpus corpus;
+    corpus.chained_breaks = opts.chained_breaks;
+    if (opts.chained_breaks)
+        corpus.notes.push_back("broken maps: parts turned in a chain (--chained-breaks)");
     // Generated buildings: every style with four seeds (quick: two styles, one seed each).
     const auto styles = buildingStyles();
     std::vector<std::pair<std::string, std::uint32_t>> wanted;
@@ -224,7 +227,8 @@ Variant makeCaseMap(const Corpus& corpus, const CaseSpec& c)
     if (c.kind == "gaps") return makeWallGaps(grid, c.param, c.seed);
     if (c.kind == "ragged") return makeRagged(grid, static_cast<int>(c.param), c.seed);
     if (c.kind == "crop") return makeCrop(grid, c.param, c.seed);
-    if (c.kind == "broken") return makeBroken(grid, static_cast<int>(c.param), c.seed);
+    if (c.kind == "broken")
+        return makeBroken(grid, static_cast<int>(c.param), c.seed, corpus.chained_breaks);
     if (c.kind == "furniture") return makeFurnished(grid, c.param, c.seed);
     if (c.kind == "slam")
     {

@@ -50,6 +50,8 @@ struct CorpusOptions
     std::string data_dir;    //!< ../shared/data; empty or absent = generated only.
     bool real = true;        //!< Use the real data when present.
     std::string only;        //!< Case ids must contain it (real pairs made at run time).
+    /** Broken maps' parts turned in a chain, each against the previous one (makeBroken()). */
+    bool chained_breaks = false;
 };
 
 struct Corpus
@@ -58,6 +60,7 @@ struct Corpus
     std::vector<RealPair> real_pairs;
     std::vector<CaseSpec> cases;
     std::vector<std::string> notes;  //!< What was skipped, and why.
+    bool chained_breaks = false;     //!< CorpusOptions::chained_breaks.
 };
 
 /** Generates the buildings, reads the real data and lists the cases. Deterministic. */

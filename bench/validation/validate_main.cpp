@@ -35,7 +35,7 @@ namespace
 const char* kUsage =
     "usage: topoeval_validate [--quick] [--out DIR] [--seed N] [--threads N] [--data DIR]\n"
     "                         [--no-real] [--ini FILE] [--pictures N] [--floors FILE]\n"
-    "                         [--only TEXT] [--draw-ground-truths] [--force]\n"
+    "                         [--only TEXT] [--draw-ground-truths] [--chained-breaks] [--force]\n"
     "  --quick        the CI subset (~40 cases)\n"
     "  --out DIR      where cases.csv, cases.json, summary.txt, pictures/ go\n"
     "                 (default topoeval-out/validation; an existing cases.csv needs --force)\n"
@@ -49,6 +49,9 @@ const char* kUsage =
     "(bench/validation/quick_floors.txt)\n"
     "  --only TEXT    only cases whose id contains TEXT\n"
     "  --draw-ground-truths  draw every ground truth's graph into pictures/gt_NAME.png\n"
+    "  --chained-breaks  broken maps' parts turned in a chain, each against the previous part\n"
+    "                 about a point of their common border (a SLAM map's breaks); default: each\n"
+    "                 part about a point of its own border (the standard corpus)\n"
     "Exit codes: 0 done, 2 bad arguments or input, 3 a floor or the truth check failed, 1 other.\n";
 
 struct Options
@@ -95,6 +98,8 @@ Options parse(int argc, char** argv)
             o.corpus.data_dir = need(i);
         else if (a == "--no-real")
             o.corpus.real = false;
+        else if (a == "--chained-breaks")
+            o.corpus.chained_breaks = true;
         else if (a == "--ini")
             o.ini = need(i);
         else if (a == "--pictures")
@@ -183,6 +188,7 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
     j.beginObject();
     j.key("seed").value(static_cast<std::uint64_t>(opt.corpus.seed));
     j.key("quick").value(opt.corpus.quick);
+    j.key("chained_breaks").value(opt.corpus.chained_breaks);
     j.key("notes").beginArray();
     for (const auto& n : notes) j.value(n);
     j.endArray();

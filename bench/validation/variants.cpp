@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <opencv2/imgproc.hpp>
 #include <random>
 
@@ -542,7 +543,7 @@ Variant makeCrop(const COccupancyGridMap2D& gt, double keep_share, std::uint32_t
     return v;
 }
 
-Variant makeBroken(const COccupancyGridMap2D& gt, int breaks, std::uint32_t seed)
+Variant makeBroken(const COccupancyGridMap2D& gt, int breaks, std::uint32_t seed, bool chained)
 {
     std::mt19937 rng(seed);
     const double dir = uniform(rng, 0, M_PI);
@@ -608,56 +609,74 @@ Variant makeBroken(const COccupancyGridMap2D& gt, int breaks, std::uint32_t seed
         return -1;
     };
     // Pivots: for each turned part, a free cell of open space (a point on the robot's way) on
-    // its border with another part.
+    // its border with another part (chained: with the previous part of the chain).
+    const std::size_t n_parts = boxes.size();
+    std::vector<std::size_t> chain(n_parts);
+    std::iota(chain.begin(), chain.end(), std::size_t{0});
+    if (n_parts == 4) chain = {0, 1, 3, 2};  // quadrants: around, each next to the previous
+    std::vector<int> previous(n_parts, -1);  // chained: the part each is turned against
+    if (chained)
+        for (std::size_t k = 1; k < n_parts; ++k) previous[chain[k]] = int(chain[k - 1]);
     const cv::Mat clear = distanceTo(src, sx, sy, notFree);
     const int reach = std::max(1, static_cast<int>(std::lround(0.1 / res)));
-    std::vector<std::vector<Eigen::Vector2d>> open(boxes.size()), any(boxes.size());
+    std::vector<std::vector<Eigen::Vector2d>> open(n_parts), any(n_parts);
     for (int y = reach; y < sy - reach; ++y)
         for (int x = reach; x < sx - reach; ++x)
         {
             if (!freeCell(src[static_cast<std::size_t>(y) * sx + x])) continue;
             const int j = partOf(centre(x, y));
+            if (j < 0) continue;
             bool border = false;
             for (int d = 0; d < 4 && !border; ++d)
             {
                 const int xx = x + (d == 0 ? reach : d == 1 ? -reach : 0);
                 const int yy = y + (d == 2 ? reach : d == 3 ? -reach : 0);
-                border = partOf(centre(xx, yy)) != j;
+                const int k = partOf(centre(xx, yy));
+                border = k != j && (!chained || k == previous[static_cast<std::size_t>(j)]);
             }
-            if (!border || j < 0) continue;
+            if (!border) continue;
             any[static_cast<std::size_t>(j)].push_back(centre(x, y));
             if (clear.at<float>(y, x) * res >= 0.4)
                 open[static_cast<std::size_t>(j)].push_back(centre(x, y));
         }
     // Yaws: part 0 stays; the others turn 10-30 degrees either way, at least 10 degrees apart
-    // from every other part, so each part is a separate brokenness group.
-    std::vector<double> yaw(boxes.size(), 0.0);
+    // from every other part, so each part is a separate brokenness group (chained: each turn
+    // is against the previous part, and the sums along the chain are kept apart).
+    std::vector<double> yaw(n_parts, 0.0), turn(n_parts, 0.0);
     for (int attempt = 0; attempt < 200; ++attempt)
     {
-        for (std::size_t j = 1; j < yaw.size(); ++j)
-            yaw[j] = (uniform(rng, 0, 1) < 0.5 ? -1.0 : 1.0) * uniform(rng, 10.0, 30.0);
+        for (std::size_t j = 1; j < n_parts; ++j)
+            turn[j] = (uniform(rng, 0, 1) < 0.5 ? -1.0 : 1.0) * uniform(rng, 10.0, 30.0);
+        for (std::size_t k = 1; k < n_parts; ++k)
+            yaw[chain[k]] = turn[chain[k]] + (chained ? yaw[chain[k - 1]] : 0.0);
         bool apart = true;
-        for (std::size_t i = 0; i < yaw.size(); ++i)
-            for (std::size_t j = i + 1; j < yaw.size(); ++j)
+        for (std::size_t i = 0; i < n_parts; ++i)
+            for (std::size_t j = i + 1; j < n_parts; ++j)
                 apart = apart && std::abs(yaw[i] - yaw[j]) >= 10.0;
         if (apart) break;
     }
     const Rigid2D global = randomRigid(seed ^ 0x9e3779b9u, 10.0);
-    std::vector<WarpPart> parts;
-    for (std::size_t j = 0; j < boxes.size(); ++j)
+    // Each part's turn in the ground truth's frame (chained, in the chain's order: the previous
+    // part's, then its own about a point of their common border; else in the parts' order, as
+    // the standard corpus has always drawn them).
+    std::vector<Rigid2D> placed(n_parts);
+    for (std::size_t k = 1; k < n_parts; ++k)
     {
+        const std::size_t j = chained ? chain[k] : k;
+        const auto& from = open[j].empty() ? any[j] : open[j];
+        Eigen::Vector2d c = Eigen::Vector2d::Zero();
+        if (!from.empty())
+            c = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
         Rigid2D r;
-        if (j > 0)
-        {
-            const auto& from = open[j].empty() ? any[j] : open[j];
-            Eigen::Vector2d c = Eigen::Vector2d::Zero();
-            if (!from.empty())
-                c = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
-            r.yaw_rad = mrpt::DEG2RAD(yaw[j]);
-            r.t_m = c - Eigen::Rotation2Dd(r.yaw_rad) * c;
-        }
+        r.yaw_rad = mrpt::DEG2RAD(turn[j]);
+        r.t_m = c - Eigen::Rotation2Dd(r.yaw_rad) * c;
+        placed[j] = chained ? placed[chain[k - 1]].compose(r) : r;
+    }
+    std::vector<WarpPart> parts;
+    for (std::size_t j = 0; j < n_parts; ++j)
+    {
         const Box box = boxes[j];
-        parts.push_back({global.compose(r), [u, w, box](const Eigen::Vector2d& p)
+        parts.push_back({global.compose(placed[j]), [u, w, box](const Eigen::Vector2d& p)
                          {
                              const double s = u.dot(p), t = w.dot(p);
                              return s >= box.s0 && s < box.s1 && t >= box.t0 && t < box.t1;

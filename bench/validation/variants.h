@@ -72,8 +72,15 @@ Variant makeCrop(const mrpt::maps::COccupancyGridMap2D& gt, double keep_share, s
  * (halves; a third and two sixths; quadrants, across a seeded direction); part 0 stays, each
  * other part is turned 10-30 degrees (seeded sign, at least 10 degrees from every other part)
  * about a pivot on free space of its border. The whole map is then moved rigidly by a seeded
- * yaw and shift. part_yaw_deg per part. */
-Variant makeBroken(const mrpt::maps::COccupancyGridMap2D& gt, int breaks, std::uint32_t seed);
+ * yaw and shift. part_yaw_deg per part.
+ * `chained` false (the standard corpus): each part is turned about a point of its border with
+ * any other part, independently of the others, so two turned neighbours are moved apart at
+ * their common cut. true (`topoeval_validate --chained-breaks`): the parts are visited in a
+ * chain of neighbours (0, 1, 2; quadrants 0, 1, 3, 2), each turned 10-30 degrees against the
+ * previous one about a point of their common border and carried with it, as a SLAM map's error
+ * at a place is carried into everything mapped after it. With one break both are the same. */
+Variant makeBroken(const mrpt::maps::COccupancyGridMap2D& gt, int breaks, std::uint32_t seed,
+                   bool chained = false);
 
 /** Furniture: desks, shelves and leg groups of tables and chairs placed in free space with at
  * least 0.5 m clearance (so no passage is closed), about `items_per_m2` of free area
