@@ -749,7 +749,7 @@ TEST(ConsistentMatching, WallsOfASmallPartAgreeAndPinItsFit)
 TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
 {
     // near() answers from its cells (a cell holding a wall point) before it searches, and
-    // around() keeps what it found per vertex: both must say what a look at every wall point
+    // around() keeps what it found per place: both must say what a look at every wall point
     // says, at every radius, for points on, near and far from the walls and outside them all.
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> along(-10.0f, 10.0f), jitter(-0.03f, 0.03f);
@@ -787,13 +787,13 @@ TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
     EXPECT_TRUE(index.near(Eigen::Vector2d(500.0, -500.0), 1e6));
     // around(): the points within r, the same each time it is asked.
     const Eigen::Vector2d p(1.0, 0.4);
-    const std::vector<Eigen::Vector2d> first = index.around(3, p, 1.5);
+    const std::vector<Eigen::Vector2d> first = index.around(p, 1.5);
     std::size_t within = 0;
     for (const auto& q : walls) within += (q.cast<double>() - p).norm() <= 1.5;
     EXPECT_EQ(first.size(), within);
-    EXPECT_EQ(index.around(3, p, 1.5), first);
-    EXPECT_GT(index.around(4, p, 3.0).size(), first.size());
-    EXPECT_TRUE(internal::WallIndex({}).around(0, p, 1.0).empty());
+    EXPECT_EQ(index.around(p, 1.5), first);
+    EXPECT_GT(index.around(p, 3.0).size(), first.size());
+    EXPECT_TRUE(internal::WallIndex({}).around(p, 1.0).empty());
     EXPECT_FALSE(internal::WallIndex({}).near(p, 1.0));
 }
 

@@ -10,18 +10,20 @@
 
 namespace mrpt_topoeval::internal
 {
+namespace
+{
+/** Cells of near()'s shortcut at most: beyond, the KD-tree answers alone (a few MB). */
+constexpr long kMaxNearCells = 1 << 24;
+/** The walls compared for the share: a few hundred points give a mean to a few percent. */
+constexpr std::size_t kMaxWallPoints = 400;
+}  // namespace
+
 WallIndex::WallIndex(const std::vector<Eigen::Vector2f>& points)
 {
     m_points.reserve(points.size());
     for (const Eigen::Vector2f& q : points) m_points.insertPointFast(q.x(), q.y());
     m_points.kdTreeEnsureIndexBuilt2D();
 }
-
-namespace
-{
-/** Cells of near()'s shortcut at most: beyond, the KD-tree answers alone (a few MB). */
-constexpr long kMaxNearCells = 1 << 24;
-}  // namespace
 
 const WallIndex::Cells& WallIndex::cellsFor(double r) const
 {
@@ -55,7 +57,7 @@ bool WallIndex::near(const Eigen::Vector2d& p, double r) const
 {
     if (empty()) return false;
     const Cells& c = cellsFor(r);
-    if (c.size > 0.0)
+    if (!c.held.empty())
     {
         const double fx = (p.x() - c.origin.x()) / c.size, fy = (p.y() - c.origin.y()) / c.size;
         if (fx >= 0.0 && fy >= 0.0 && fx < double(c.nx) && fy < double(c.ny) &&
@@ -65,10 +67,9 @@ bool WallIndex::near(const Eigen::Vector2d& p, double r) const
     return m_points.kdTreeClosestPoint2DsqrError(float(p.x()), float(p.y())) <= float(r * r);
 }
 
-const std::vector<Eigen::Vector2d>& WallIndex::around(int vertex, const Eigen::Vector2d& p,
-                                                      double r) const
+const std::vector<Eigen::Vector2d>& WallIndex::around(const Eigen::Vector2d& p, double r) const
 {
-    const auto [at, fresh] = m_around.try_emplace({vertex, r});
+    const auto [at, fresh] = m_around.try_emplace({p.x(), p.y(), r});
     if (!fresh) return at->second;
     std::vector<nanoflann::ResultItem<std::size_t, float>> found;
     m_points.kdTreeRadiusSearch2D(float(p.x()), float(p.y()), float(r * r), found);
@@ -78,12 +79,6 @@ const std::vector<Eigen::Vector2d>& WallIndex::around(int vertex, const Eigen::V
     return at->second;
 }
 
-namespace
-{
-/** The walls compared for the share: a few hundred points give a mean to a few percent. */
-constexpr std::size_t kMaxWallPoints = 400;
-}  // namespace
-
 std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex& walls,
                                          const std::vector<int>& vertices, double margin_m,
                                          std::size_t max_points)
@@ -92,7 +87,7 @@ std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex
     for (int v : vertices)
     {
         const auto& near =
-            walls.around(v, g.vertices[v].position_m, g.vertices[v].clearance_m + margin_m);
+            walls.around(g.vertices[v].position_m, g.vertices[v].clearance_m + margin_m);
         pts.insert(pts.end(), near.begin(), near.end());
     }
     auto less = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b)

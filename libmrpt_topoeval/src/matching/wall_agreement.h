@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -27,21 +28,19 @@ public:
     explicit WallIndex(const std::vector<Eigen::Vector2f>& points);
     /** True if a wall point lies within r of p. */
     bool near(const Eigen::Vector2d& p, double r) const;
-    /** The wall points within r of p, a vertex of the graph whose walls these are; searched
-     * once per vertex and radius: the matcher and the evaluation ask for one vertex's walls
-     * many times (every group, pair test and ICP that holds it). */
-    const std::vector<Eigen::Vector2d>& around(int vertex, const Eigen::Vector2d& p,
-                                               double r) const;
+    /** The wall points within r of p, searched once per place and radius: the matcher asks
+     * for one vertex's walls many times (every group, pair test and ICP that holds it). */
+    const std::vector<Eigen::Vector2d>& around(const Eigen::Vector2d& p, double r) const;
     bool empty() const { return m_points.empty(); }
 
 private:
     mrpt::maps::CSimplePointsMap m_points;
-    mutable std::map<std::pair<int, double>, std::vector<Eigen::Vector2d>> m_around;
+    mutable std::map<std::tuple<double, double, double>, std::vector<Eigen::Vector2d>> m_around;
     /** For near(p, r): the cells, r / (2 sqrt 2) wide, that hold a wall point. A point in such
      * a cell lies within r / 2 of it, so near() answers without a search; elsewhere the
      * KD-tree decides. Made once per r (a wall agreement asks it of hundreds of points, each
      * under nine shifts of the fit). */
-    struct Cells
+    struct Cells  // none held: too many cells for r, the KD-tree answers alone
     {
         double size = 0.0;
         Eigen::Vector2d origin{0.0, 0.0};
