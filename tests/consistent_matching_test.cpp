@@ -24,12 +24,14 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <set>
 
 #include "../libmrpt_topoeval/src/geometry/horn.h"
 #include "../libmrpt_topoeval/src/graph/MatchView.h"
+#include "../libmrpt_topoeval/src/matching/cliques.h"
 #include "../libmrpt_topoeval/src/matching/wall_agreement.h"
 #include "synthetic_maps.h"
 #include "test_paths.h"
@@ -795,6 +797,124 @@ TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
     EXPECT_GT(index.around(p, 3.0).size(), first.size());
     EXPECT_TRUE(internal::WallIndex({}).around(p, 1.0).empty());
     EXPECT_FALSE(internal::WallIndex({}).near(p, 1.0));
+}
+
+TEST(ConsistentMatching, APartlySeenSmallFlatIsMatched)
+{
+    // A flat's layout (a hall and four rooms: 10 matchable vertices) against a robot map of its
+    // lower half (two doors closed, the hall's far end not explored: 6 vertices, 5 of them the
+    // layout's), turned 200 degrees. The smaller graph holds 6 vertices: too few for a
+    // significant group of min_group_vertices, so the small graph's rule decides (doc/
+    // matching.md, "A small graph"): a group of 0.6 of it, the best maximal clique, judged by
+    // its similarity or its walls.
+    auto sketch = [](const std::vector<std::array<double, 4>>& free)
+    {
+        GridSketch g(11.0, 16.0);
+        for (const auto& r : free) g.carve(r[0], r[1], r[2], r[3]);
+        return g.grid();
+    };
+    // The hall, then each room with its door.
+    const std::vector<std::array<double, 4>> lower = {{4.0, 1.0, 5.5, 8.5},
+                                                      {0.5, 1.0, 3.6, 5.5},
+                                                      {3.6, 2.5, 4.0, 3.5},
+                                                      {5.9, 1.0, 10.0, 6.0},
+                                                      {5.5, 4.0, 5.9, 5.0}};
+    std::vector<std::array<double, 4>> all = lower;
+    all[0] = {4.0, 1.0, 5.5, 13.0};
+    for (const auto& room : {std::array<double, 4>{0.5, 8.0, 3.6, 15.0},
+                             {3.6, 11.0, 4.0, 12.0},
+                             {5.9, 8.0, 10.0, 13.0},
+                             {5.5, 9.0, 5.9, 10.0}})
+        all.push_back(room);
+    const COccupancyGridMap2D layout = sketch(all), seen = sketch(lower);
+    const double yaw = 200.0 * kDeg;
+    const Eigen::Vector2d shift(1.5, -2.0);
+    const COccupancyGridMap2D moved = transformGrid(seen, yaw, shift);
+    const Score s = scoreGrids("flat_seen_200", layout, moved, undoMove(seen, yaw, shift));
+    EXPECT_GE(s.matched, 4u);
+    EXPECT_EQ(s.correct, s.matched);
+    EXPECT_EQ(s.correct, s.possible);
+    // Under the paper's share (0.75 of 6: 5) the graph is not small, and a group of 5 among
+    // so few candidates is not significant: nothing was matched before session 26.
+    GraphMatcherParameters paper_share = tunedParameters().matcher;
+    paper_share.min_small_graph_group_share = 0.75;
+    EXPECT_EQ(scoreGrids("flat_seen_200_paper_share", layout, moved, undoMove(seen, yaw, shift),
+                         &paper_share)
+                  .matched,
+              0u);
+    // Another flat's lower half (rooms of other sizes, doors elsewhere) matches neither.
+    const COccupancyGridMap2D other = sketch({{3.0, 1.0, 4.5, 9.0},
+                                              {0.5, 1.0, 2.6, 7.0},
+                                              {2.6, 5.5, 3.0, 6.5},
+                                              {4.9, 1.0, 10.0, 3.5},
+                                              {4.5, 2.0, 4.9, 3.0},
+                                              {4.9, 4.0, 8.0, 9.0},
+                                              {4.5, 7.0, 4.9, 8.0}});
+    auto never = [](const Eigen::Vector2d&) { return Eigen::Vector2d(1e9, 1e9); };
+    EXPECT_EQ(scoreGrids("flat_vs_other", layout, other, never).matched, 0u);
+    EXPECT_EQ(scoreGrids("seen_vs_other", seen, other, never).matched, 0u);
+}
+
+TEST(ConsistentMatching, CliquesAreFoundAsBySearchingEverySubset)
+{
+    // A small graph's first group is chosen among every maximal clique of its candidates
+    // (maximalCliques), a big graph's is the maximum clique (MaxClique): both against a look
+    // at every subset of random graphs of 14 vertices, sparse to dense.
+    std::mt19937 rng(11);
+    const int n = 14;
+    for (const double density : {0.2, 0.5, 0.8})
+        for (int trial = 0; trial < 5; ++trial)
+        {
+            std::bernoulli_distribution edge(density);
+            std::vector<std::uint8_t> adjacent(std::size_t(n) * n, 0);
+            for (int a = 0; a < n; ++a)
+                for (int b = a + 1; b < n; ++b)
+                    if (edge(rng))
+                        adjacent[std::size_t(a) * n + b] = adjacent[std::size_t(b) * n + a] = 1;
+            auto isClique = [&](unsigned set)
+            {
+                for (int a = 0; a < n; ++a)
+                    for (int b = a + 1; b < n; ++b)
+                        if ((set >> a & 1u) && (set >> b & 1u) && !adjacent[std::size_t(a) * n + b])
+                            return false;
+                return true;
+            };
+            std::set<std::vector<int>> expected;
+            std::size_t largest = 0;
+            for (unsigned set = 1; set < (1u << n); ++set)
+            {
+                if (!isClique(set)) continue;
+                bool maximal = true;
+                for (int v = 0; v < n && maximal; ++v)
+                    maximal = (set >> v & 1u) || !isClique(set | (1u << v));
+                std::vector<int> members;
+                for (int v = 0; v < n; ++v)
+                    if (set >> v & 1u) members.push_back(v);
+                largest = std::max(largest, members.size());
+                if (maximal && members.size() >= 3) expected.insert(members);
+            }
+            std::vector<int> all(n);
+            std::iota(all.begin(), all.end(), 0);
+            const auto found = internal::maximalCliques(adjacent, n, all, 3, 1000000);
+            EXPECT_EQ(std::set<std::vector<int>>(found.begin(), found.end()), expected)
+                << "density " << density << " trial " << trial;
+            EXPECT_EQ(found.size(), expected.size());  // each reported once
+            internal::MaxClique search(adjacent, n, 1000000);
+            const std::vector<int> best = search.run(all);
+            EXPECT_EQ(best.size(), largest);
+            std::vector<int> sorted = best;
+            std::sort(sorted.begin(), sorted.end());
+            unsigned set = 0;
+            for (int v : sorted) set |= 1u << v;
+            EXPECT_TRUE(isClique(set));
+        }
+    // A budget of one step reports nothing and says so.
+    std::vector<std::uint8_t> triangle{0, 1, 1, 1, 0, 1, 1, 1, 0};
+    std::size_t steps = 0;
+    EXPECT_EQ(internal::maximalCliques(triangle, 3, {0, 1, 2}, 3, 1000, &steps).size(), 1u);
+    EXPECT_GT(steps, 1u);
+    EXPECT_TRUE(internal::maximalCliques(triangle, 3, {0, 1, 2}, 3, 1, &steps).empty());
+    EXPECT_EQ(steps, 1u);
 }
 
 TEST(ConsistentMatching, AFurnishedHallsRoomsAreMatchedByTheirWalls)

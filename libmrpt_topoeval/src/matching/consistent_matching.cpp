@@ -21,6 +21,7 @@
 
 #include "geometry/horn.h"
 #include "geometry/line_spread.h"
+#include "matching/cliques.h"
 #include "matching/matching.h"
 #include "matching/wall_agreement.h"
 
@@ -33,117 +34,6 @@ struct Candidate
     int gt = -1, map = -1;
     double similarity = 0.0;
     double uncertainty_m = 0.0;  //!< clearance_tolerance_share x the smaller clearance
-};
-
-/** Maximum clique by branch and bound with a greedy-colouring bound (Tomita's MCQ, the
- * algorithm of Parra Bustos et al.). Deterministic; each run() stops after `budget` steps with
- * the best clique found so far. */
-class MaxClique
-{
-public:
-    MaxClique(const std::vector<std::uint8_t>& adjacent, int n, std::size_t budget)
-        : m_adj(adjacent), m_n(n), m_budget(budget)
-    {
-    }
-
-    /** The largest clique among `vertices` (in the given order of preference). */
-    std::vector<int> run(std::vector<int> vertices)
-    {
-        m_best.clear();
-        m_steps = 0;
-        // Highest consistency-graph degree first (MCQ's initial order), stable for ties.
-        const std::vector<int> deg = countEdges(vertices);
-        std::stable_sort(vertices.begin(), vertices.end(),
-                         [&](int a, int b) { return deg[a] > deg[b]; });
-        std::vector<int> order, colour;
-        colourSort(vertices, order, colour);
-        std::vector<int> r;
-        expand(r, order, colour);
-        return m_best;
-    }
-    /** Steps spent by the last run(). */
-    std::size_t steps() const { return m_steps; }
-    /** Edges among the last run()'s vertices (the consistency graph's density). */
-    std::size_t edges() const { return m_edges; }
-    /** Sets edges() to the edges among `vertices` without a search (for a clique given in
-     * advance); returns each vertex's degree among them, indexed by vertex. */
-    std::vector<int> countEdges(const std::vector<int>& vertices)
-    {
-        std::vector<int> deg(m_n, 0);
-        m_edges = 0;
-        for (int v : vertices)
-            for (int u : vertices) deg[v] += adj(u, v);
-        for (int v : vertices) m_edges += std::size_t(deg[v]);
-        m_edges /= 2;
-        return deg;
-    }
-
-private:
-    bool adj(int a, int b) const { return m_adj[std::size_t(a) * m_n + b] != 0; }
-
-    // Greedy colouring of p: order by colour class, colour[i] = class number (1-based) of
-    // order[i]; the colour is an upper bound of the clique size within order[0..i].
-    void colourSort(const std::vector<int>& p, std::vector<int>& order, std::vector<int>& colour)
-    {
-        std::vector<std::vector<int>> classes;
-        for (int v : p)
-        {
-            std::size_t k = 0;
-            for (; k < classes.size(); ++k)
-            {
-                bool free = true;
-                for (int u : classes[k])
-                    if (adj(u, v))
-                    {
-                        free = false;
-                        break;
-                    }
-                if (free) break;
-            }
-            if (k == classes.size()) classes.emplace_back();
-            classes[k].push_back(v);
-        }
-        order.clear();
-        colour.clear();
-        for (std::size_t k = 0; k < classes.size(); ++k)
-            for (int v : classes[k])
-            {
-                order.push_back(v);
-                colour.push_back(int(k) + 1);
-            }
-    }
-
-    void expand(std::vector<int>& r, const std::vector<int>& p, const std::vector<int>& colour)
-    {
-        for (int i = int(p.size()) - 1; i >= 0; --i)
-        {
-            if (++m_steps > m_budget) return;
-            if (r.size() + std::size_t(colour[i]) <= m_best.size()) return;
-            const int v = p[i];
-            r.push_back(v);
-            std::vector<int> np;
-            for (int j = 0; j < i; ++j)
-                if (adj(v, p[j])) np.push_back(p[j]);
-            if (np.empty())
-            {
-                if (r.size() > m_best.size()) m_best = r;
-            }
-            else
-            {
-                std::vector<int> no, nc;
-                colourSort(np, no, nc);
-                expand(r, no, nc);
-            }
-            r.pop_back();
-        }
-    }
-
-    const std::vector<std::uint8_t>& m_adj;
-    int m_n;
-    std::size_t m_budget;
-    std::size_t m_steps = 0;
-    std::size_t m_edges = 0;
-    std::vector<int> m_best;
 };
 
 /** log10 of the number of false alarms (Desolneux, Moisan and Morel's a contrario test, as in
@@ -303,13 +193,14 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // Pairs of rejected first-group cliques (gt * n_map + map), not tried again.
     std::vector<std::uint8_t> rejected(std::size_t(n_gt) * n_map, 0);
     auto pairKey = [&](const Candidate& c) { return std::size_t(c.gt) * n_map + c.map; };
-    // On graphs too small for min_group_vertices (a bare plan of a few rooms) a group needs
-    // min_isomorphism_share of the smaller graph's matchable vertices, and never fewer than 3,
-    // as the paper's isomorphisms do (doc/matching.md).
+    // On graphs too small for min_group_vertices (a bare plan of a few rooms, a robot map of a
+    // flat) a group needs min_small_graph_group_share of the smaller graph's matchable
+    // vertices, and never fewer than 3 (doc/matching.md, "A small graph").
     const int smaller = std::min(ctx.gt.numActive(), ctx.map.numActive());
-    const int min_size =
-        std::min(p.min_group_vertices,
-                 std::max(3, int(std::ceil(p.min_isomorphism_share * double(smaller) - 1e-9))));
+    const int min_size = std::min(
+        p.min_group_vertices,
+        std::max(3, int(std::ceil(p.min_small_graph_group_share * double(smaller) - 1e-9))));
+    const bool small_graph = min_size < p.min_group_vertices;
     out.min_group_size = min_size;
     auto tolerance = [&](const Candidate& c, double dist)
     { return p.distance_tolerance_m + c.uncertainty_m + p.distance_tolerance_ratio * dist; };
@@ -405,9 +296,12 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         return alignWallsByIcp(gt, map, *gt_walls, *map_walls, {{a, b}}, p.wall_margin_m, start,
                                std::max(error, wall_tolerance));
     };
+    // Asked of further groups, and of a small graph's first group: a first group that decides
+    // that two big maps show one place has its own tests (significance, its walls and its
+    // pairs' walls), but a small graph's has only its similarity or its walls.
     auto wallsConfirm = [&](const std::vector<int>& group, const Transform2D& fit)
     {
-        if (!(p.min_part_wall_agreement > 0.0) || out.cores.empty()) return false;
+        if (!(p.min_part_wall_agreement > 0.0) || (out.cores.empty() && !small_graph)) return false;
         return agreeAndPin(wallsOf(group, fit));
     };
     // Whether a pair's walls agree where it is, made once per pair: under the fit of the first
@@ -694,6 +588,30 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         core_fits.push_back(fitOf(group, nullptr));
         buildCandidates();
     };
+    // On a small graph the maximum clique is often tied (a flat's layout and its robot map:
+    // among 26 candidates two cliques of 4, one of them true), and which one the search
+    // returns is chance; rejected, it takes the pairs it shares with the other along. So every
+    // maximal clique of at least the size needed is settled, and the first group is the
+    // clique that settles to the most pairs, then the one whose walls agree best under its
+    // fit, then the most similar; `fallback` (the maximum clique) when none settles.
+    auto bestSmallGraphClique = [&](const std::vector<int>& pool, const std::vector<int>& fallback)
+    {
+        std::size_t steps = 0;
+        const std::vector<std::vector<int>> cliques =
+            maximalCliques(adjacent, n, pool, needed(), std::size_t(p.max_clique_steps), &steps);
+        out.clique_steps += steps;
+        std::vector<int> best = fallback;
+        std::tuple<std::size_t, double, double> best_key{0, 0.0, 0.0};
+        for (const std::vector<int>& clique : cliques)
+        {
+            std::vector<int> group = clique;
+            if (!settle(group)) continue;
+            const std::tuple<std::size_t, double, double> key{
+                group.size(), wallsOf(group, fitOf(group, nullptr)).share, meanSimilarity(group)};
+            if (key > best_key) best_key = key, best = clique;
+        }
+        return best;
+    };
     // 3. Groups. The first: the maximum clique of the free candidates, settled; a clique that
     //    is not acceptable leaves the pool (more tries, more chance groups between different
     //    buildings). Then, while groups are found, the best acceptable consensus of the pool:
@@ -719,6 +637,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         {
             clique = search.run(pool);
             out.clique_steps += search.steps();
+            if (small_graph && int(clique.size()) >= needed())
+                clique = bestSmallGraphClique(pool, clique);
         }
         if (int(clique.size()) < needed()) break;
         for (int i : clique) rejected[pairKey(cands[i])] = 1;

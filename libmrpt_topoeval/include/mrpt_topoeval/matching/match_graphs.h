@@ -90,10 +90,17 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * smaller consistent sets occur by chance between unrelated places [1]. */
     int min_group_vertices = 5;
     /** On a graph too small for min_group_vertices (a plan of a few rooms), a group of at least
-     * min_isomorphism_share of the smaller graph's matchable vertices (and 3) is accepted when
-     * its pairs' mean vertex similarity is at least this: three consistent distances alone are
+     * min_small_graph_group_share of the smaller graph's matchable vertices (and 3) is accepted
+     * when its pairs' mean vertex similarity is at least this, or its walls agree and pin its
+     * fit (min_part_wall_agreement, max_wall_pinning): three consistent distances alone are
      * common between unrelated places [0..1]. */
     double min_small_group_similarity = 0.7;
+    /** ... a group needs this share of the smaller graph's matchable vertices (and 3), not the
+     * paper's min_isomorphism_share: a robot map of a flat shows part of it (doors closed,
+     * rooms not entered), and with 0.75 a layout of 6 vertices would need 5 of them. That
+     * group is the best of every maximal clique of the candidates, each settled
+     * (doc/matching.md, "A small graph") [ratio]. */
+    double min_small_graph_group_share = 0.6;
     /** ... after keeping its biggest part linked in both graphs: two pairs are linked when
      * their ground-truth vertices are within this many edges of each other, and so are their
      * map vertices (2: one vertex may be missing or extra in between). Consistency by chance
