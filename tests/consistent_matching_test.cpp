@@ -1000,6 +1000,25 @@ std::vector<std::set<int>> partsOfGroups(const QualityReport& r,
                              return t == truth.end() ? -1 : t->second;
                          });
 }
+
+// Every pair true (partOf >= 0), at least `min_pairs`, and brokenness one group per part of
+// `parts`, each group of one part.
+void expectOneGroupPerPart(const QualityReport& r, const std::function<int(int, int)>& partOf,
+                           std::size_t min_pairs, const std::set<int>& parts)
+{
+    for (const auto& p : r.match.pairs)
+        EXPECT_GE(partOf(p.ground_truth, p.map), 0) << p.ground_truth << " -> " << p.map;
+    EXPECT_GE(r.match.pairs.size(), min_pairs);
+    EXPECT_EQ(r.brokenness.degree, int(parts.size()) - 1);
+    ASSERT_EQ(r.brokenness.groups.size(), parts.size());
+    std::set<int> found;
+    for (const auto& of_group : partsOfGroups(r, partOf))
+    {
+        EXPECT_EQ(of_group.size(), 1u);
+        found.insert(*of_group.begin());
+    }
+    EXPECT_EQ(found, parts);
+}
 }  // namespace
 
 // A further part whose consistent pairs lie in two linked pieces of the graphs is one group
@@ -1039,21 +1058,53 @@ TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
     EXPECT_EQ(r_join.brokenness.degree, 2);
     EXPECT_GE(r_join.match.pairs.size(), 25u);
     // Every pair true; the three parts are three brokenness groups, each of one part.
-    for (const auto& p : r.match.pairs)
-        EXPECT_GE(partOf(p.ground_truth, p.map), 0) << p.ground_truth << " -> " << p.map;
-    EXPECT_GE(r.match.pairs.size(), 25u);
-    EXPECT_EQ(r.brokenness.degree, 2);
-    ASSERT_EQ(r.brokenness.groups.size(), 3u);
-    std::set<int> parts;
-    for (const auto& of_group : partsOfGroups(r, partOf))
-    {
-        EXPECT_EQ(of_group.size(), 1u);
-        parts.insert(*of_group.begin());
-    }
-    EXPECT_EQ(parts, (std::set<int>{0, 1, 2}));
+    expectOneGroupPerPart(r, partOf, 25, {0, 1, 2});
     // Without the join (and session 22's bridges): one break missed.
     EXPECT_EQ(r0.brokenness.degree, 1);
     EXPECT_LE(r0.match.pairs.size(), 15u);
+}
+
+TEST(ConsistentMatching, APartInScatteredPiecesIsFound)
+{
+    // A column hall cut in three (corpus case column_hall_1004/broken_2): part 1's five
+    // consistent pairs span 23 m in linked pieces of 2, 1, 1 and 1 pairs (the vertices between
+    // them changed at the cut). Kept whole: significant as a first group must be (0.37 chance
+    // groups as big expected), another part by its fit, and confirmed by its walls
+    // (scattered_part_groups; doc/matching.md, "A part in scattered pieces"). The validator's
+    // counterparts: {gt, map, part}.
+    const auto [gt, map] = corpusCase("scattered_part", "column_hall_1004_broken_2");
+    struct Truth
+    {
+        int gt, map, part;
+    };
+    std::vector<Truth> truth = {
+        {0, 5, 2},   {2, 0, 0},   {3, 1, 0},   {4, 22, 2},  {5, 44, 2},  {6, 24, 2},  {7, 13, 2},
+        {9, 3, 0},   {10, 17, 0}, {11, 29, 2}, {12, 52, 2}, {13, 70, 2}, {14, 9, 0},  {15, 17, 0},
+        {16, 73, 2}, {17, 64, 2}, {19, 31, 2}, {20, 16, 0}, {21, 10, 0}, {22, 8, 0},  {23, 59, 2},
+        {24, 81, 2}, {27, 15, 0}, {28, 11, 0}, {29, 20, 0}, {31, 46, 1}, {32, 35, 2}, {33, 14, 0},
+        {34, 35, 0}, {35, 27, 0}, {38, 81, 1}, {39, 18, 0}, {40, 65, 1}, {42, 23, 1}, {43, 26, 1},
+        {44, 32, 0}, {46, 42, 0}, {47, 45, 0}, {48, 57, 0}, {49, 68, 1}, {51, 54, 1}, {54, 55, 0},
+        {57, 67, 1}, {61, 72, 0}, {63, 66, 0}, {65, 79, 1}};
+    // The validator's other true pairs of the match (every pair of its match is true): map
+    // vertices that its per-part truth also puts within 0.5 m of these ground-truth vertices.
+    truth.push_back({14, 12, 0});
+    truth.push_back({31, 47, 1});
+    truth.push_back({57, 71, 1});
+    auto partOf = [&](int g, int m)
+    {
+        for (const auto& t : truth)
+            if (t.gt == g && t.map == m) return t.part;
+        return -1;  // not a true pair
+    };
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.scattered_part_groups = false;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    // Every pair true; the three parts are three brokenness groups, each of one part.
+    expectOneGroupPerPart(r, partOf, 30, {0, 1, 2});
+    // Without the rule: part 1 unmatched, one break missed.
+    EXPECT_EQ(r0.brokenness.degree, 1);
+    for (const auto& p : r0.match.pairs) EXPECT_NE(partOf(p.ground_truth, p.map), 1);
 }
 
 TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)

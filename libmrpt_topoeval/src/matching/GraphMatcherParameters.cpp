@@ -83,6 +83,9 @@ TOPOEVAL_PARAMETER_TABLE(
             "consistent: a further group's other linked pieces of this many pairs join it when "
             "its fit places them and the walls agree (0: off)",
             atLeast(0)),
+    flag(TOPOEVAL_KEY(scattered_part_groups),
+         "consistent: a further group in pieces too small is kept whole when significant, its "
+         "walls agree and it is another part"),
     real(TOPOEVAL_KEY(part_bridge_ratio), "ratio",
          "consistent: a further group's neighbour pairs keep their distance within this",
          atLeast(0)),

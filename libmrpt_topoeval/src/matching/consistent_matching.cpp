@@ -131,6 +131,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     std::vector<Candidate> cands;
     std::vector<std::uint8_t> adjacent;
     int n = 0;
+    std::size_t consistent_pairs = 0;  // edges of the consistency graph
     auto isFree = [&](int a, int b) { return ctx.gt_to_map[a] < 0 && ctx.map_to_gt[b] < 0; };
     auto buildCandidates = [&]()
     {
@@ -178,6 +179,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                    x.uncertainty_m + y.uncertainty_m;
         };
         adjacent.assign(std::size_t(n) * n, 0);
+        consistent_pairs = 0;
         for (int i = 0; i < n; ++i)
             for (int j = i + 1; j < n; ++j)
             {
@@ -185,7 +187,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 if (x.gt == y.gt || x.map == y.map) continue;
                 const double dg = (pg(x.gt) - pg(y.gt)).norm(), dm = (pm(x.map) - pm(y.map)).norm();
                 if (std::abs(dg - dm) <= distanceTolerance(x, y, dg, dm))
+                {
                     adjacent[std::size_t(i) * n + j] = adjacent[std::size_t(j) * n + i] = 1;
+                    ++consistent_pairs;
+                }
             }
     };
     buildCandidates();
@@ -450,6 +455,36 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         }
         return true;
     };
+    // A further group none of whose linked pieces is big enough (a part whose vertices between
+    // its counterparts changed at the cut) is kept whole when it is as big and as significant
+    // among the candidates as a first group must be, it is another part (its fit misplaces at
+    // least half of every accepted group's pairs: scattered pairs of an accepted part are
+    // growing's to reach, and their own fit puts them a few decimetres off), and its walls agree
+    // and pin its fit (scattered_part_groups; doc/matching.md, "A part in scattered pieces").
+    auto scatteredPart = [&](const std::vector<int>& group)
+    {
+        if (!p.scattered_part_groups || out.cores.empty() ||
+            int(group.size()) < p.min_group_vertices)
+            return false;
+        const double density =
+            n > 1 ? double(consistent_pairs) / (0.5 * double(n) * double(n - 1)) : 0.0;
+        if (log10FalseAlarms(double(n), double(group.size()), density) >
+            std::log10(p.max_false_alarms))
+            return false;
+        const Transform2D fit = fitOf(group, nullptr);
+        const Eigen::Vector2d centre = centreOf(group);
+        for (const auto& core : out.cores)
+        {
+            std::size_t placed = 0;
+            for (const auto& [a, b] : core)
+            {
+                const Candidate c{a, b, S(a, b), uncertainty(a, b)};
+                placed += offBy(c, fit) <= tolerance(c, (pg(a) - centre).norm()) ? 1 : 0;
+            }
+            if (2 * placed >= core.size()) return false;
+        }
+        return wallsConfirm(group, fit);
+    };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
     // biggest part linked in both graphs (a further group's other linked pieces joined when
@@ -478,8 +513,11 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         // consistent by chance (different buildings made of the same corridors and rooms) is
         // scattered. Only the biggest linked component stays; a further group's other pieces
         // join it when its own fit places them and the walls vouch for the whole
-        // (min_joined_piece_pairs).
+        // (min_joined_piece_pairs). A further group no piece of which is big enough stays whole
+        // when scatteredPart() finds it a part.
         const std::vector<std::vector<int>> pieces = linkedComponents(group, cands, linkedPairs);
+        if ((pieces.empty() || int(pieces.front().size()) < need) && scatteredPart(group))
+            return acceptable(group);
         group = pieces.empty() ? std::vector<int>{} : pieces.front();
         if (int(group.size()) < need) return false;
         if (!out.cores.empty() && p.min_joined_piece_pairs > 0 && pieces.size() > 1)

@@ -149,6 +149,15 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * 1: two linked pairs are a fixed segment, one is any vertex the fit happens to place.
      * Not for the first group. 0: off (doc/matching.md) [1]. */
     int min_joined_piece_pairs = 2;
+    /** A further group of at least min_group_vertices pairs none of whose linked pieces is big
+     * enough (the vertices between a part's counterparts changed at its cut, so no two of its
+     * pairs are within support_hops edges in both maps) is kept whole when it is significant
+     * among the candidates as a first group must be (max_false_alarms), its walls agree and
+     * pin its fit (min_part_wall_agreement, max_wall_pinning), and it is another part: its fit
+     * misplaces at least half of every accepted group's pairs (a scattered set of an accepted
+     * part's pairs is growing's to reach; its own fit puts them a few decimetres off). false:
+     * such a group is refused (doc/matching.md, "A part in scattered pieces") [bool]. */
+    bool scattered_part_groups = true;
     /** A further group next to an accepted one in the ground truth (support_hops) must have a
      * bridge: one such neighbour pair whose map distance equals its ground-truth distance
      * within distance_tolerance_m + clearance share + this x the distance (a turn of up to 30
