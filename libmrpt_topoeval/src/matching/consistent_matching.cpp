@@ -459,8 +459,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // its counterparts changed at the cut) is kept whole when it is as big and as significant
     // among the candidates as a first group must be, it is another part (its fit misplaces at
     // least half of every accepted group's pairs: scattered pairs of an accepted part are
-    // growing's to reach, and their own fit puts them a few decimetres off), and its walls agree
-    // and pin its fit (scattered_part_groups; doc/matching.md, "A part in scattered pieces").
+    // growing's to reach, and their own fit puts them a few decimetres off), it is acceptable
+    // as every group must be, and its walls agree and pin its fit (scattered_part_groups;
+    // doc/matching.md, "A part in scattered pieces"). The walls last: they cost the most (on
+    // the Intel pair four such tests, all refusing, took 6 ms when asked before the rest).
     auto scatteredPart = [&](const std::vector<int>& group)
     {
         if (!p.scattered_part_groups || out.cores.empty() ||
@@ -483,7 +485,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             }
             if (2 * placed >= core.size()) return false;
         }
-        return wallsConfirm(group, fit);
+        return acceptable(group) && wallsConfirm(group, fit);
     };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
@@ -517,7 +519,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         // when scatteredPart() finds it a part.
         const std::vector<std::vector<int>> pieces = linkedComponents(group, cands, linkedPairs);
         if ((pieces.empty() || int(pieces.front().size()) < need) && scatteredPart(group))
-            return acceptable(group);
+            return true;
         group = pieces.empty() ? std::vector<int>{} : pieces.front();
         if (int(group.size()) < need) return false;
         if (!out.cores.empty() && p.min_joined_piece_pairs > 0 && pieces.size() > 1)
