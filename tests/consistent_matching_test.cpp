@@ -799,6 +799,53 @@ TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
     EXPECT_FALSE(internal::WallIndex({}).near(p, 1.0));
 }
 
+TEST(ConsistentMatching, WallIndexNearAnswersAsItsKdTree)
+{
+    // near() looks at the wall points of a few buckets instead of searching MRPT's KD-tree:
+    // it must give the KD-tree's answer (its nearest point's squared distance, in floats, at
+    // most r^2 in floats) everywhere, also a hair from the radius, where the two would part if
+    // the buckets missed a point the floats' rounding puts within r, or measured otherwise.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> along(-10.0f, 10.0f), jitter(-0.03f, 0.03f);
+    std::vector<Eigen::Vector2f> walls;
+    for (int k = 0; k < 3000; ++k)
+    {
+        const float t = along(rng);
+        walls.emplace_back(t + 31.7f, 0.5f * t + jitter(rng) - 12.3f);
+        if (k % 3 == 0) walls.emplace_back(35.0f + jitter(rng), 0.5f * t - 12.3f);
+    }
+    const internal::WallIndex index(walls);
+    mrpt::maps::CSimplePointsMap kd;
+    for (const auto& q : walls) kd.insertPointFast(q.x(), q.y());
+    auto kdNear = [&](const Eigen::Vector2d& p, double r)
+    { return kd.kdTreeClosestPoint2DsqrError(float(p.x()), float(p.y())) <= float(r * r); };
+    std::uniform_real_distribution<double> anywhere(15.0, 48.0), turn(0.0, 2.0 * M_PI),
+        hair(-1e-6, 1e-6);
+    std::uniform_int_distribution<std::size_t> any_wall(0, walls.size() - 1);
+    int hits = 0, misses = 0;
+    for (const double r : {0.02, 0.15, 0.3, 0.45, 2.5})
+        for (int k = 0; k < 6000; ++k)
+        {
+            Eigen::Vector2d p(anywhere(rng), anywhere(rng) - 30.0);
+            if (k % 2 == 0)  // a hair from r off a wall point, every other one along an axis
+            {
+                const double a = k % 4 == 0 ? double(k / 4 % 4) * M_PI / 2.0 : turn(rng);
+                p = walls[any_wall(rng)].cast<double>() +
+                    (r + hair(rng) * r) * Eigen::Vector2d(std::cos(a), std::sin(a));
+            }
+            const bool expected = kdNear(p, r);
+            EXPECT_EQ(index.near(p, r), expected) << "r " << r << " at " << p.transpose();
+            expected ? ++hits : ++misses;
+        }
+    EXPECT_GT(hits, 5000);
+    EXPECT_GT(misses, 5000);
+    // Far outside the walls, and at every wall point itself.
+    EXPECT_FALSE(index.near(Eigen::Vector2d(-1e4, 3e4), 0.15));
+    EXPECT_EQ(index.near(Eigen::Vector2d(1e30, 0.0), 0.15), kdNear({1e30, 0.0}, 0.15));
+    for (std::size_t k = 0; k < walls.size(); k += 7)
+        EXPECT_TRUE(index.near(walls[k].cast<double>(), 0.15));
+}
+
 TEST(ConsistentMatching, APartlySeenSmallFlatIsMatched)
 {
     // A flat's layout (a hall and four rooms: 10 matchable vertices) against a robot map of its

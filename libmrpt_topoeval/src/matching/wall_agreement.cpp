@@ -12,8 +12,12 @@ namespace mrpt_topoeval::internal
 {
 namespace
 {
-/** Cells of near()'s shortcut at most: beyond, the KD-tree answers alone (a few MB). */
+/** Cells of near()'s shortcut, and its buckets, at most: beyond, the KD-tree answers alone (a
+ * few MB each; a bucket's offset takes 4 bytes, a cell 1). */
 constexpr long kMaxNearCells = 1 << 24;
+constexpr long kMaxBuckets = 1 << 21;
+/** A bucket is this much wider than r: far more than the floats' rounding (about 10^-7 of r). */
+constexpr double kBucketMargin = 1e-3;
 /** The walls compared for the share: a few hundred points give a mean to a few percent. */
 constexpr std::size_t kMaxWallPoints = 400;
 }  // namespace
@@ -34,21 +38,55 @@ const WallIndex::Cells& WallIndex::cellsFor(double r) const
     const auto& ys = m_points.getPointsBufferRef_y();
     const auto [x0, x1] = std::minmax_element(xs.begin(), xs.end());
     const auto [y0, y1] = std::minmax_element(ys.begin(), ys.end());
-    const double size = r / (2.0 * std::sqrt(2.0));
-    // Counted in doubles first: a tiny radius must not overflow the cell count.
-    const double cols = std::floor((*x1 - *x0) / size) + 1.0;
-    const double rows = std::floor((*y1 - *y0) / size) + 1.0;
-    if (!(cols * rows <= double(kMaxNearCells))) return c;
-    const long nx = long(cols), ny = long(rows);
-    c.size = size;
     c.origin = {*x0, *y0};
-    c.nx = nx, c.ny = ny;
-    c.held.assign(std::size_t(nx * ny), 0);
-    for (std::size_t i = 0; i < xs.size(); ++i)
+    // Counted in doubles first: a tiny radius must not overflow the cell count.
+    auto count = [&](double size, long max_cells, long& nx, long& ny)
     {
-        const long ix = std::min(nx - 1, long((xs[i] - c.origin.x()) / size));
-        const long iy = std::min(ny - 1, long((ys[i] - c.origin.y()) / size));
-        c.held[std::size_t(iy * nx + ix)] = 1;
+        const double cols = std::floor((*x1 - *x0) / size) + 1.0;
+        const double rows = std::floor((*y1 - *y0) / size) + 1.0;
+        if (!(cols * rows <= double(max_cells))) return false;
+        nx = long(cols), ny = long(rows);
+        return true;
+    };
+    // A point's cell along one axis; the same expression for the walls and for a query, so
+    // that both round alike (the extreme wall point falls in the last cell, not past it).
+    auto along = [](float v, double origin, double size) { return (double(v) - origin) / size; };
+    const double size = r / (2.0 * std::sqrt(2.0));
+    if (count(size, kMaxNearCells, c.nx, c.ny))
+    {
+        c.size = size;
+        c.held.assign(std::size_t(c.nx * c.ny), 0);
+        for (std::size_t i = 0; i < xs.size(); ++i)
+        {
+            const long ix = std::min(c.nx - 1, long(along(xs[i], c.origin.x(), size)));
+            const long iy = std::min(c.ny - 1, long(along(ys[i], c.origin.y(), size)));
+            c.held[std::size_t(iy * c.nx + ix)] = 1;
+        }
+    }
+    // The buckets: a point within r in the KD-tree's floats (their rounding may stretch r by a
+    // few parts in 10^7) is less than a bucket away along each axis.
+    const double bucket = r * (1.0 + kBucketMargin);
+    if (count(bucket, kMaxBuckets, c.bx, c.by))
+    {
+        c.bucket = bucket;
+        std::vector<std::uint32_t> of(xs.size());
+        c.first.assign(std::size_t(c.bx * c.by) + 1, 0);
+        for (std::size_t i = 0; i < xs.size(); ++i)
+        {
+            const long ix = std::min(c.bx - 1, long(along(xs[i], c.origin.x(), bucket)));
+            const long iy = std::min(c.by - 1, long(along(ys[i], c.origin.y(), bucket)));
+            of[i] = std::uint32_t(iy * c.bx + ix);
+            ++c.first[of[i] + 1];
+        }
+        for (std::size_t k = 1; k < c.first.size(); ++k) c.first[k] += c.first[k - 1];
+        std::vector<std::uint32_t> next(c.first.begin(), c.first.end() - 1);
+        c.xs.resize(xs.size());
+        c.ys.resize(xs.size());
+        for (std::size_t i = 0; i < xs.size(); ++i)
+        {
+            const std::uint32_t k = next[of[i]]++;
+            c.xs[k] = xs[i], c.ys[k] = ys[i];
+        }
     }
     return c;
 }
@@ -64,7 +102,36 @@ bool WallIndex::near(const Eigen::Vector2d& p, double r) const
             c.held[std::size_t(long(fy) * c.nx + long(fx))])
             return true;
     }
-    return m_points.kdTreeClosestPoint2DsqrError(float(p.x()), float(p.y())) <= float(r * r);
+    // The query as the KD-tree takes it.
+    const float qx = float(p.x()), qy = float(p.y());
+    const float r2 = float(r * r);
+    if (!c.first.empty())
+    {
+        const double fx = (double(qx) - c.origin.x()) / c.bucket;
+        const double fy = (double(qy) - c.origin.y()) / c.bucket;
+        // More than a bucket outside them all: no wall point within r.
+        if (fx < -1.0 || fy < -1.0 || fx >= double(c.bx + 1) || fy >= double(c.by + 1))
+            return false;
+        if (fx >= -1.0 && fy >= -1.0)  // not NaN
+        {
+            const long ix = long(std::floor(fx)), iy = long(std::floor(fy));
+            for (long y = std::max(0L, iy - 1); y <= std::min(c.by - 1, iy + 1); ++y)
+                for (long x = std::max(0L, ix - 1); x <= std::min(c.bx - 1, ix + 1); ++x)
+                {
+                    const std::size_t k = std::size_t(y * c.bx + x);
+                    for (std::uint32_t i = c.first[k]; i < c.first[k + 1]; ++i)
+                    {
+                        // nanoflann's L2_Simple_Adaptor::evalMetric, term by term in floats.
+                        const float dx = qx - c.xs[i], dy = qy - c.ys[i];
+                        float d2 = dx * dx;
+                        d2 += dy * dy;
+                        if (d2 <= r2) return true;
+                    }
+                }
+            return false;
+        }
+    }
+    return m_points.kdTreeClosestPoint2DsqrError(qx, qy) <= r2;
 }
 
 const std::vector<Eigen::Vector2d>& WallIndex::around(const Eigen::Vector2d& p, double r) const

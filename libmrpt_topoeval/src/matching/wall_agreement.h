@@ -37,15 +37,22 @@ private:
     mrpt::maps::CSimplePointsMap m_points;
     mutable std::map<std::tuple<double, double, double>, std::vector<Eigen::Vector2d>> m_around;
     /** For near(p, r): the cells, r / (2 sqrt 2) wide, that hold a wall point. A point in such
-     * a cell lies within r / 2 of it, so near() answers without a search; elsewhere the
-     * KD-tree decides. Made once per r (a wall agreement asks it of hundreds of points, each
-     * under nine shifts of the fit). */
-    struct Cells  // none held: too many cells for r, the KD-tree answers alone
+     * a cell lies within r / 2 of it, so near() answers without a search. Elsewhere the wall
+     * points by bucket, a little over r wide, decide: a point within r lies in p's bucket or
+     * one of its 8 neighbours, and a look at those few points in the KD-tree's own float
+     * arithmetic answers as its search does, at a fraction of its cost (the search was most of
+     * the wall agreement's time). Made once per r (a wall agreement asks it of hundreds of
+     * points, each under nine shifts of the fit). */
+    struct Cells  // none held or none bucketed: too many cells for r, the KD-tree answers
     {
         double size = 0.0;
         Eigen::Vector2d origin{0.0, 0.0};
         long nx = 0, ny = 0;
         std::vector<std::uint8_t> held;
+        double bucket = 0.0;
+        long bx = 0, by = 0;
+        std::vector<std::uint32_t> first;  //!< bucket k's points: [first[k], first[k + 1])
+        std::vector<float> xs, ys;         //!< the wall points, bucket by bucket
     };
     mutable std::map<double, Cells> m_cells;
     const Cells& cellsFor(double r) const;
