@@ -799,11 +799,12 @@ TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
     EXPECT_FALSE(internal::WallIndex({}).near(p, 1.0));
 }
 
-TEST(ConsistentMatching, WallIndexNearAnswersAsItsKdTree)
+TEST(ConsistentMatching, WallIndexAnswersAsItsKdTree)
 {
-    // near() looks at the wall points of a few buckets instead of searching MRPT's KD-tree:
-    // it must give the KD-tree's answer (its nearest point's squared distance, in floats, at
-    // most r^2 in floats) everywhere, also a hair from the radius, where the two would part if
+    // near() and around() look at the wall points of a few buckets instead of searching MRPT's
+    // KD-tree: they must give the KD-tree's answers (near: its nearest point's squared
+    // distance, in floats, at most r^2 in floats; around: the points its radius search finds,
+    // strictly within r^2) everywhere, also a hair from the radius, where the two would part if
     // the buckets missed a point the floats' rounding puts within r, or measured otherwise.
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> along(-10.0f, 10.0f), jitter(-0.03f, 0.03f);
@@ -844,6 +845,46 @@ TEST(ConsistentMatching, WallIndexNearAnswersAsItsKdTree)
     EXPECT_EQ(index.near(Eigen::Vector2d(1e30, 0.0), 0.15), kdNear({1e30, 0.0}, 0.15));
     for (std::size_t k = 0; k < walls.size(); k += 7)
         EXPECT_TRUE(index.near(walls[k].cast<double>(), 0.15));
+
+    // around(): the same points as the KD-tree's radius search (in no particular order), at
+    // places anywhere and a hair from r off a wall point, for radii of a vertex's walls and
+    // radii that span all walls or none.
+    auto sorted = [](std::vector<Eigen::Vector2d> v)
+    {
+        std::sort(v.begin(), v.end(),
+                  [](const auto& a, const auto& b)
+                  { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+        return v;
+    };
+    auto kdAround = [&](const Eigen::Vector2d& p, double r)
+    {
+        std::vector<nanoflann::ResultItem<std::size_t, float>> found;
+        kd.kdTreeRadiusSearch2D(float(p.x()), float(p.y()), float(r * r), found);
+        std::vector<Eigen::Vector2d> out;
+        for (const auto& f : found)
+            out.emplace_back(kd.getPointsBufferRef_x()[f.first],
+                             kd.getPointsBufferRef_y()[f.first]);
+        return sorted(out);
+    };
+    std::size_t found = 0;
+    for (const double r : {0.3, 1.0, 1.37, 2.5, 1e5})
+        for (int k = 0; k < 300; ++k)
+        {
+            Eigen::Vector2d p(anywhere(rng), anywhere(rng) - 30.0);
+            if (k % 2 == 0)
+            {
+                const double a = k % 4 == 0 ? double(k / 4 % 4) * M_PI / 2.0 : turn(rng);
+                p = walls[any_wall(rng)].cast<double>() +
+                    (r + hair(rng) * r) * Eigen::Vector2d(std::cos(a), std::sin(a));
+            }
+            const auto expected = kdAround(p, r);
+            ASSERT_EQ(sorted(index.around(p, r)), expected) << "r " << r << " at " << p.transpose();
+            found += expected.size();
+        }
+    EXPECT_GT(found, 100000u);
+    EXPECT_TRUE(index.around(Eigen::Vector2d(-1e4, 3e4), 2.0).empty());
+    EXPECT_EQ(sorted(index.around(Eigen::Vector2d(1e30, -1e30), 1.0)),
+              kdAround({1e30, -1e30}, 1.0));
 }
 
 TEST(ConsistentMatching, APartlySeenSmallFlatIsMatched)

@@ -12,82 +12,106 @@ namespace mrpt_topoeval::internal
 {
 namespace
 {
-/** Cells of near()'s shortcut, and its buckets, at most: beyond, the KD-tree answers alone (a
- * few MB each; a bucket's offset takes 4 bytes, a cell 1). */
+/** Cells of near()'s shortcut, and buckets, at most: beyond, the KD-tree answers (a few MB
+ * each; a bucket's offset takes 4 bytes, a cell 1). */
 constexpr long kMaxNearCells = 1 << 24;
 constexpr long kMaxBuckets = 1 << 21;
-/** A bucket is this much wider than r: far more than the floats' rounding (about 10^-7 of r). */
+/** How much farther than r the buckets are looked in: far more than the floats' rounding
+ * (about 10^-7 of r), so that no point the KD-tree's floats put within r is missed. */
 constexpr double kBucketMargin = 1e-3;
+/** around()'s buckets [m]: a vertex's clearance + margin (1-3 m) spans a few of them. */
+constexpr double kAroundBucket_m = 0.5;
 /** The walls compared for the share: a few hundred points give a mean to a few percent. */
 constexpr std::size_t kMaxWallPoints = 400;
+
+/** Where v falls along one axis of a grid, in cells; one expression for the walls and for a
+ * query, so that both round alike (the extreme wall point falls in the last cell, not past). */
+double along(double v, double origin, double size) { return (v - origin) / size; }
+
+/** The squared distance of nanoflann's L2_Simple_Adaptor::evalMetric, term by term in floats,
+ * as MRPT's KD-tree of the points measures it. */
+float squaredDistance(float qx, float qy, float x, float y)
+{
+    const float dx = qx - x, dy = qy - y;
+    float d2 = dx * dx;
+    d2 += dy * dy;
+    return d2;
+}
 }  // namespace
 
 WallIndex::WallIndex(const std::vector<Eigen::Vector2f>& points)
 {
+    // No KD-tree here: MRPT builds it on the first search, which the buckets rarely leave.
     m_points.reserve(points.size());
     for (const Eigen::Vector2f& q : points) m_points.insertPointFast(q.x(), q.y());
-    m_points.kdTreeEnsureIndexBuilt2D();
+}
+
+void WallIndex::fill(Buckets& b, double size) const
+{
+    const auto& xs = m_points.getPointsBufferRef_x();
+    const auto& ys = m_points.getPointsBufferRef_y();
+    if (xs.empty() || !(size > 0.0)) return;
+    const auto [x0, x1] = std::minmax_element(xs.begin(), xs.end());
+    const auto [y0, y1] = std::minmax_element(ys.begin(), ys.end());
+    // Counted in doubles first: a tiny size must not overflow the count.
+    const double cols = std::floor(along(*x1, *x0, size)) + 1.0;
+    const double rows = std::floor(along(*y1, *y0, size)) + 1.0;
+    if (!(cols * rows <= double(kMaxBuckets))) return;
+    b.size = size;
+    b.origin = {*x0, *y0};
+    b.nx = long(cols), b.ny = long(rows);
+    std::vector<std::uint32_t> of(xs.size());
+    b.first.assign(std::size_t(b.nx * b.ny) + 1, 0);
+    for (std::size_t i = 0; i < xs.size(); ++i)
+    {
+        const long ix = std::min(b.nx - 1, long(along(xs[i], b.origin.x(), size)));
+        const long iy = std::min(b.ny - 1, long(along(ys[i], b.origin.y(), size)));
+        of[i] = std::uint32_t(iy * b.nx + ix);
+        ++b.first[of[i] + 1];
+    }
+    for (std::size_t k = 1; k < b.first.size(); ++k) b.first[k] += b.first[k - 1];
+    std::vector<std::uint32_t> next(b.first.begin(), b.first.end() - 1);
+    b.xs.resize(xs.size());
+    b.ys.resize(xs.size());
+    for (std::size_t i = 0; i < xs.size(); ++i)
+    {
+        const std::uint32_t k = next[of[i]]++;
+        b.xs[k] = xs[i], b.ys[k] = ys[i];
+    }
 }
 
 const WallIndex::Cells& WallIndex::cellsFor(double r) const
 {
+    if (m_last_cells && r == m_last_r) return *m_last_cells;
     const auto [at, fresh] = m_cells.try_emplace(r);
     Cells& c = at->second;
+    m_last_r = r, m_last_cells = &c;
     if (!fresh || empty() || !(r > 0.0)) return c;
     const auto& xs = m_points.getPointsBufferRef_x();
     const auto& ys = m_points.getPointsBufferRef_y();
     const auto [x0, x1] = std::minmax_element(xs.begin(), xs.end());
     const auto [y0, y1] = std::minmax_element(ys.begin(), ys.end());
-    c.origin = {*x0, *y0};
-    // Counted in doubles first: a tiny radius must not overflow the cell count.
-    auto count = [&](double size, long max_cells, long& nx, long& ny)
-    {
-        const double cols = std::floor((*x1 - *x0) / size) + 1.0;
-        const double rows = std::floor((*y1 - *y0) / size) + 1.0;
-        if (!(cols * rows <= double(max_cells))) return false;
-        nx = long(cols), ny = long(rows);
-        return true;
-    };
-    // A point's cell along one axis; the same expression for the walls and for a query, so
-    // that both round alike (the extreme wall point falls in the last cell, not past it).
-    auto along = [](float v, double origin, double size) { return (double(v) - origin) / size; };
     const double size = r / (2.0 * std::sqrt(2.0));
-    if (count(size, kMaxNearCells, c.nx, c.ny))
+    // Counted in doubles first: a tiny radius must not overflow the cell count.
+    const double cols = std::floor((*x1 - *x0) / size) + 1.0;
+    const double rows = std::floor((*y1 - *y0) / size) + 1.0;
+    if (cols * rows <= double(kMaxNearCells))
     {
+        const long nx = long(cols), ny = long(rows);
         c.size = size;
-        c.held.assign(std::size_t(c.nx * c.ny), 0);
+        c.origin = {*x0, *y0};
+        c.nx = nx, c.ny = ny;
+        c.held.assign(std::size_t(nx * ny), 0);
         for (std::size_t i = 0; i < xs.size(); ++i)
         {
-            const long ix = std::min(c.nx - 1, long(along(xs[i], c.origin.x(), size)));
-            const long iy = std::min(c.ny - 1, long(along(ys[i], c.origin.y(), size)));
-            c.held[std::size_t(iy * c.nx + ix)] = 1;
+            const long ix = std::min(nx - 1, long((xs[i] - c.origin.x()) / size));
+            const long iy = std::min(ny - 1, long((ys[i] - c.origin.y()) / size));
+            c.held[std::size_t(iy * nx + ix)] = 1;
         }
     }
-    // The buckets: a point within r in the KD-tree's floats (their rounding may stretch r by a
-    // few parts in 10^7) is less than a bucket away along each axis.
-    const double bucket = r * (1.0 + kBucketMargin);
-    if (count(bucket, kMaxBuckets, c.bx, c.by))
-    {
-        c.bucket = bucket;
-        std::vector<std::uint32_t> of(xs.size());
-        c.first.assign(std::size_t(c.bx * c.by) + 1, 0);
-        for (std::size_t i = 0; i < xs.size(); ++i)
-        {
-            const long ix = std::min(c.bx - 1, long(along(xs[i], c.origin.x(), bucket)));
-            const long iy = std::min(c.by - 1, long(along(ys[i], c.origin.y(), bucket)));
-            of[i] = std::uint32_t(iy * c.bx + ix);
-            ++c.first[of[i] + 1];
-        }
-        for (std::size_t k = 1; k < c.first.size(); ++k) c.first[k] += c.first[k - 1];
-        std::vector<std::uint32_t> next(c.first.begin(), c.first.end() - 1);
-        c.xs.resize(xs.size());
-        c.ys.resize(xs.size());
-        for (std::size_t i = 0; i < xs.size(); ++i)
-        {
-            const std::uint32_t k = next[of[i]]++;
-            c.xs[k] = xs[i], c.ys[k] = ys[i];
-        }
-    }
+    // A point within r (in the KD-tree's floats, which may stretch r by a few parts in 10^7)
+    // is less than a bucket away along each axis.
+    fill(c.buckets, r * (1.0 + kBucketMargin));
     return c;
 }
 
@@ -105,28 +129,22 @@ bool WallIndex::near(const Eigen::Vector2d& p, double r) const
     // The query as the KD-tree takes it.
     const float qx = float(p.x()), qy = float(p.y());
     const float r2 = float(r * r);
-    if (!c.first.empty())
+    const Buckets& b = c.buckets;
+    if (!b.first.empty())
     {
-        const double fx = (double(qx) - c.origin.x()) / c.bucket;
-        const double fy = (double(qy) - c.origin.y()) / c.bucket;
+        const double fx = along(qx, b.origin.x(), b.size), fy = along(qy, b.origin.y(), b.size);
         // More than a bucket outside them all: no wall point within r.
-        if (fx < -1.0 || fy < -1.0 || fx >= double(c.bx + 1) || fy >= double(c.by + 1))
+        if (fx < -1.0 || fy < -1.0 || fx >= double(b.nx + 1) || fy >= double(b.ny + 1))
             return false;
         if (fx >= -1.0 && fy >= -1.0)  // not NaN
         {
             const long ix = long(std::floor(fx)), iy = long(std::floor(fy));
-            for (long y = std::max(0L, iy - 1); y <= std::min(c.by - 1, iy + 1); ++y)
-                for (long x = std::max(0L, ix - 1); x <= std::min(c.bx - 1, ix + 1); ++x)
+            for (long y = std::max(0L, iy - 1); y <= std::min(b.ny - 1, iy + 1); ++y)
+                for (long x = std::max(0L, ix - 1); x <= std::min(b.nx - 1, ix + 1); ++x)
                 {
-                    const std::size_t k = std::size_t(y * c.bx + x);
-                    for (std::uint32_t i = c.first[k]; i < c.first[k + 1]; ++i)
-                    {
-                        // nanoflann's L2_Simple_Adaptor::evalMetric, term by term in floats.
-                        const float dx = qx - c.xs[i], dy = qy - c.ys[i];
-                        float d2 = dx * dx;
-                        d2 += dy * dy;
-                        if (d2 <= r2) return true;
-                    }
+                    const std::size_t k = std::size_t(y * b.nx + x);
+                    for (std::uint32_t i = b.first[k]; i < b.first[k + 1]; ++i)
+                        if (squaredDistance(qx, qy, b.xs[i], b.ys[i]) <= r2) return true;
                 }
             return false;
         }
@@ -137,13 +155,47 @@ bool WallIndex::near(const Eigen::Vector2d& p, double r) const
 const std::vector<Eigen::Vector2d>& WallIndex::around(const Eigen::Vector2d& p, double r) const
 {
     const auto [at, fresh] = m_around.try_emplace({p.x(), p.y(), r});
-    if (!fresh) return at->second;
+    std::vector<Eigen::Vector2d>& out = at->second;
+    if (!fresh || empty()) return out;
+    if (!m_around_buckets)
+    {
+        m_around_buckets.emplace();
+        fill(*m_around_buckets, kAroundBucket_m);
+    }
+    // The query, and nanoflann's radius search's test (strictly within r^2), as the KD-tree.
+    const float qx = float(p.x()), qy = float(p.y());
+    const float r2 = float(r * r);
+    const Buckets& b = *m_around_buckets;
+    if (!b.first.empty() && r > 0.0 && std::isfinite(qx) && std::isfinite(qy))
+    {
+        // The buckets that may hold a point within r, a little farther, clamped to the grid
+        // in doubles (a huge r must not overflow).
+        const double reach = r * (1.0 + kBucketMargin);
+        auto range = [&](float q, double origin, long n)
+        {
+            const double lo = std::floor(along(double(q) - reach, origin, b.size));
+            const double hi = std::floor(along(double(q) + reach, origin, b.size));
+            return std::make_pair(long(std::min(std::max(lo, 0.0), double(n))),
+                                  long(std::max(std::min(hi, double(n - 1)), -1.0)));
+        };
+        const auto [x_lo, x_hi] = range(qx, b.origin.x(), b.nx);
+        const auto [y_lo, y_hi] = range(qy, b.origin.y(), b.ny);
+        for (long y = y_lo; y <= y_hi; ++y)
+            for (long x = x_lo; x <= x_hi; ++x)
+            {
+                const std::size_t k = std::size_t(y * b.nx + x);
+                for (std::uint32_t i = b.first[k]; i < b.first[k + 1]; ++i)
+                    if (squaredDistance(qx, qy, b.xs[i], b.ys[i]) < r2)
+                        out.emplace_back(b.xs[i], b.ys[i]);
+            }
+        return out;
+    }
     std::vector<nanoflann::ResultItem<std::size_t, float>> found;
-    m_points.kdTreeRadiusSearch2D(float(p.x()), float(p.y()), float(r * r), found);
+    m_points.kdTreeRadiusSearch2D(qx, qy, r2, found);
     const auto& xs = m_points.getPointsBufferRef_x();
     const auto& ys = m_points.getPointsBufferRef_y();
-    for (const auto& f : found) at->second.emplace_back(xs[f.first], ys[f.first]);
-    return at->second;
+    for (const auto& f : found) out.emplace_back(xs[f.first], ys[f.first]);
+    return out;
 }
 
 std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex& walls,

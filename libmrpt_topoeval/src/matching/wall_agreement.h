@@ -19,43 +19,61 @@
 
 namespace mrpt_topoeval::internal
 {
-/** A graph's wall points in MRPT's KD-tree (`CSimplePointsMap`, nanoflann), for "is there a wall
- * point within r of p" and "the wall points within r of p". It keeps what it found (near()'s
- * cells, around()'s points), so one index is not for concurrent use: each match makes its own. */
+/** A graph's wall points, for "is there a wall point within r of p" and "the wall points within
+ * r of p". Both answer as a search of MRPT's KD-tree (`CSimplePointsMap`, nanoflann) does, in
+ * its float arithmetic, but from the points of a few square buckets: building the KD-tree and
+ * searching it was a fifth of a compare's time (the tree is built only where the buckets would
+ * be too many). It keeps what it found (near()'s cells and buckets, around()'s points), so one
+ * index is not for concurrent use: each match makes its own. */
 class WallIndex
 {
 public:
     explicit WallIndex(const std::vector<Eigen::Vector2f>& points);
+    // Not copied: the last cells asked are kept by address.
+    WallIndex(const WallIndex&) = delete;
+    WallIndex& operator=(const WallIndex&) = delete;
     /** True if a wall point lies within r of p. */
     bool near(const Eigen::Vector2d& p, double r) const;
-    /** The wall points within r of p, searched once per place and radius: the matcher asks
-     * for one vertex's walls many times (every group, pair test and ICP that holds it). */
+    /** The wall points within r of p (in no particular order), searched once per place and
+     * radius: the matcher asks for one vertex's walls many times (every group, pair test and
+     * ICP that holds it). */
     const std::vector<Eigen::Vector2d>& around(const Eigen::Vector2d& p, double r) const;
     bool empty() const { return m_points.empty(); }
 
 private:
     mrpt::maps::CSimplePointsMap m_points;
     mutable std::map<std::tuple<double, double, double>, std::vector<Eigen::Vector2d>> m_around;
+    /** The wall points by square bucket `size` wide, from the lower left wall point. None:
+     * too many buckets (a tiny size), or no size. */
+    struct Buckets
+    {
+        double size = 0.0;
+        Eigen::Vector2d origin{0.0, 0.0};
+        long nx = 0, ny = 0;
+        std::vector<std::uint32_t> first;  //!< bucket k's points: [first[k], first[k + 1])
+        std::vector<float> xs, ys;         //!< the wall points, bucket by bucket
+    };
+    void fill(Buckets& b, double size) const;
     /** For near(p, r): the cells, r / (2 sqrt 2) wide, that hold a wall point. A point in such
-     * a cell lies within r / 2 of it, so near() answers without a search. Elsewhere the wall
-     * points by bucket, a little over r wide, decide: a point within r lies in p's bucket or
-     * one of its 8 neighbours, and a look at those few points in the KD-tree's own float
-     * arithmetic answers as its search does, at a fraction of its cost (the search was most of
-     * the wall agreement's time). Made once per r (a wall agreement asks it of hundreds of
-     * points, each under nine shifts of the fit). */
-    struct Cells  // none held or none bucketed: too many cells for r, the KD-tree answers
+     * a cell lies within r / 2 of it, so near() answers without a search. Elsewhere the
+     * buckets, a little over r wide, decide: a point within r lies in p's bucket or one of its
+     * 8 neighbours. Made once per r (a wall agreement asks it of hundreds of points, each
+     * under nine shifts of the fit). */
+    struct Cells  // none held: too many cells for r
     {
         double size = 0.0;
         Eigen::Vector2d origin{0.0, 0.0};
         long nx = 0, ny = 0;
         std::vector<std::uint8_t> held;
-        double bucket = 0.0;
-        long bx = 0, by = 0;
-        std::vector<std::uint32_t> first;  //!< bucket k's points: [first[k], first[k + 1])
-        std::vector<float> xs, ys;         //!< the wall points, bucket by bucket
+        Buckets buckets;
     };
     mutable std::map<double, Cells> m_cells;
+    /** The last r asked and its cells: one agreement asks near() hundreds of times at one r. */
+    mutable double m_last_r = 0.0;
+    mutable const Cells* m_last_cells = nullptr;
     const Cells& cellsFor(double r) const;
+    /** For around(): buckets of a fixed size (a vertex's radius spans a few of them). */
+    mutable std::optional<Buckets> m_around_buckets;
 };
 
 /** How well the walls around a group agree under its rigid fit. */
