@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <limits>
 #include <set>
@@ -98,6 +99,47 @@ TEST(Horn, RecoversAKnownTransformFarFromTheOrigin)
     EXPECT_NEAR(t.x_m, truth.x_m, 1e-6);
     EXPECT_NEAR(t.y_m, truth.y_m, 1e-6);
     EXPECT_LT(mse, 1e-12);
+}
+
+TEST(Horn, ApplyKeepsNoStaleRotation)
+{
+    // apply() keeps the last yaw's sine and cosine: transforms taken in turn, repeated, of yaws
+    // a hair apart, of -0 and 0 (whose sines differ in sign) and of no number must each give
+    // bit for bit what the rotation computed afresh gives.
+    auto fresh = [](const Transform2D& t, const Eigen::Vector2d& p)
+    {
+        const double a = t.yaw_deg * M_PI / 180.0;
+        return Eigen::Vector2d(t.x_m + std::cos(a) * p.x() - std::sin(a) * p.y(),
+                               t.y_m + std::sin(a) * p.x() + std::cos(a) * p.y());
+    };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<Transform2D> ts = {{0.0, 0.0, 0.0},
+                                         {-0.0, -0.0, -0.0},
+                                         {1.5, -2.0, -0.0},
+                                         {1.5, -2.0, 33.0},
+                                         {1.5, -2.0, std::nextafter(33.0, 34.0)},
+                                         {-7.0, 0.25, -179.9},
+                                         {0.0, 0.0, nan},
+                                         {3.0, 4.0, 90.0}};
+    const std::vector<Eigen::Vector2d> ps = {{0.0, 0.0},  {-0.0, -0.0}, {-0.0, 1.0},
+                                             {1.0, -0.0}, {2.5, -1.0},  {-3e4, 7e3}};
+    auto same = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+    {
+        for (int k = 0; k < 2; ++k)
+            if (std::memcmp(&a[k], &b[k], sizeof(double)) != 0) return false;
+        return true;
+    };
+    for (const std::size_t order : {0u, 1u, 2u})
+        for (std::size_t i = 0; i < 3 * ts.size(); ++i)
+        {
+            // In turn, each twice in a row, and back and forth.
+            const std::size_t k = order == 0   ? i % ts.size()
+                                  : order == 1 ? (i / 2) % ts.size()
+                                               : (i * 5) % ts.size();
+            for (const auto& p : ps)
+                EXPECT_TRUE(same(ts[k].apply(p), fresh(ts[k], p)))
+                    << "yaw " << ts[k].yaw_deg << " at " << p.transpose();
+        }
 }
 
 TEST(Horn, LeaveOneOutErrorsEqualRefitsWithoutEachPair)
