@@ -43,7 +43,21 @@ WallIndex::WallIndex(const std::vector<Eigen::Vector2f>& points)
 {
     // No KD-tree here: MRPT builds it on the first search, which the buckets rarely leave.
     m_points.reserve(points.size());
-    for (const Eigen::Vector2f& q : points) m_points.insertPointFast(q.x(), q.y());
+    for (const Eigen::Vector2f& q : points)
+    {
+        m_points.insertPointFast(q.x(), q.y());
+        const Eigen::Vector2d d = q.cast<double>();
+        const bool first = m_points.size() == 1;
+        m_lo = first ? d : Eigen::Vector2d(m_lo.cwiseMin(d));
+        m_hi = first ? d : Eigen::Vector2d(m_hi.cwiseMax(d));
+    }
+}
+
+bool WallIndex::beyondWalls(const Eigen::Vector2d& p, double r) const
+{
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || m_lo.x() > m_hi.x()) return true;
+    const Eigen::Vector2d outside = (m_lo - p).cwiseMax(p - m_hi).cwiseMax(0.0);
+    return outside.norm() > r * (1.0 + kBucketMargin) + 1e-6;
 }
 
 void WallIndex::fill(Buckets& b, double size) const
@@ -149,6 +163,7 @@ bool WallIndex::near(const Eigen::Vector2d& p, double r) const
             return false;
         }
     }
+    if (beyondWalls(p, r)) return false;
     return m_points.kdTreeClosestPoint2DsqrError(qx, qy) <= r2;
 }
 

@@ -42,6 +42,12 @@ public:
 
 private:
     mrpt::maps::CSimplePointsMap m_points;
+    /** The wall points' bounding box (empty: lo above hi). */
+    Eigen::Vector2d m_lo{1.0, 1.0}, m_hi{0.0, 0.0};
+    /** True if no wall point can lie within r of p: p is not finite, or farther than r (and a
+     * margin for the floats) from the walls' box. MRPT's nearest-point search is not asked
+     * then: it leaves its result unset when no distance is finite (a query at 1e30). */
+    bool beyondWalls(const Eigen::Vector2d& p, double r) const;
     mutable std::map<std::tuple<double, double, double>, std::vector<Eigen::Vector2d>> m_around;
     /** The wall points by square bucket `size` wide, from the lower left wall point. None:
      * too many buckets (a tiny size), or no size. */
