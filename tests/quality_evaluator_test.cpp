@@ -411,6 +411,10 @@ TEST(QualityEvaluator, GroupsThatTheirWallsPlaceAlikeAreOnePart)
     auto partOf = [&](const BrokennessGroup& g) { return nearestTurn(g, turns); };
     Parameters with = Parameters{}, without = Parameters{};
     without.quality.brokenness_merge_by_walls = false;
+    // The rule on the paper's growth (the match's groups alone get this case right, and the
+    // best-fit part moves a vertex between part 0's two groups: session 27).
+    without.quality.brokenness_from_match_groups = false;
+    without.quality.brokenness_best_fit_part = false;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
     // Three parts, three groups, each within 3 degrees of its own part's turn.
@@ -437,6 +441,10 @@ TEST(QualityEvaluator, TwoPartsInOneGrownGroupAreSplit)
     const std::vector<double> turns = {27.12, 38.61, 9.19};
     Parameters with = Parameters{}, without = Parameters{};
     without.quality.brokenness_split_parts = false;
+    // The rule on the paper's growth (the match's groups alone get this case right, and the
+    // best-fit part moves a vertex between part 0's two groups: session 27).
+    without.quality.brokenness_from_match_groups = false;
+    without.quality.brokenness_best_fit_part = false;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
     // Three parts, three groups, each within 3 degrees of its own part's turn.
@@ -450,6 +458,52 @@ TEST(QualityEvaluator, TwoPartsInOneGrownGroupAreSplit)
     for (const auto& g : r0.brokenness.groups)
         worst = std::max(worst, nearestTurn(g, turns).second);
     EXPECT_GT(worst, 3.0);
+}
+
+// The match's groups are the brokenness candidates (brokenness_from_match_groups): held-out
+// angled_9002/broken_1 (tests/data/match_groups), a building cut in two, parts turned -30.33
+// and -46.14 degrees. The matcher's groups hold each part apart; the paper's growth, seeded next
+// to the cut, makes one group of both parts' vertices turned -40.1 degrees and no break.
+TEST(QualityEvaluator, TheMatchsGroupsAreTheBrokennessCandidates)
+{
+    const auto [gt, map] = corpusCase("match_groups", "angled_9002_broken_1");
+    const std::vector<double> turns = {-30.33, -46.14};
+    Parameters with = Parameters{}, without = Parameters{};
+    without.quality.brokenness_from_match_groups = false;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    EXPECT_EQ(r.brokenness.degree, 1);
+    const std::set<int> parts = partsOfGroups(r, turns);
+    EXPECT_EQ(parts, (std::set<int>{0, 1}));
+    EXPECT_EQ(parts.size(), r.brokenness.groups.size());
+    // Without: one compromise group, more than 3 degrees from either part.
+    EXPECT_EQ(r0.brokenness.degree, 0);
+    ASSERT_EQ(r0.brokenness.groups.size(), 1u);
+    EXPECT_GT(nearestTurn(r0.brokenness.groups.front(), turns).second, 3.0);
+    // The match is the same either way: only the groups change.
+    EXPECT_EQ(r.match.pairs.size(), r0.match.pairs.size());
+}
+
+// A vertex at a cut goes to the group whose transform places it best (brokenness_best_fit_part):
+// held-out multi_wing_9002/broken_3 (tests/data/match_groups), four parts. Without the rule a
+// vertex of part 0 stays in part 1's group, whose walls then turn it 1.0 degrees off, and part
+// 0's 1.6 degrees off; with it every group is within 0.25 degrees of its part's turn.
+TEST(QualityEvaluator, AVertexAtACutGoesToThePartThatPlacesItBest)
+{
+    const auto [gt, map] = corpusCase("match_groups", "multi_wing_9002_broken_3");
+    const std::vector<double> turns = {135.61, 147.57, 161.08, 115.30};
+    Parameters with = Parameters{}, without = Parameters{};
+    without.quality.brokenness_best_fit_part = false;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    EXPECT_EQ(r.brokenness.degree, 3);
+    EXPECT_EQ(partsOfGroups(r, turns), (std::set<int>{0, 1, 2, 3}));
+    for (const auto& g : r.brokenness.groups)
+        EXPECT_LT(nearestTurn(g, turns).second, 0.25) << g.transform.yaw_deg;
+    double worst = 0.0;
+    for (const auto& g : r0.brokenness.groups)
+        worst = std::max(worst, nearestTurn(g, turns).second);
+    EXPECT_GT(worst, 1.0);
 }
 
 // Relative accuracy takes the best rigid alignment: the one whose counted errors (beyond the

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <queue>
 #include <sstream>
 
@@ -316,6 +317,54 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     };
     std::vector<char> taken(gt.vertices.size(), 0), seeded(gt.vertices.size(), 0);
     std::vector<std::vector<int>> small;  // groups under brokenness_min_vertices (step 6)
+    // A group's parts (step 2b): a part of brokenness_min_vertices is a group, its vertices
+    // taken; a smaller one of brokenness_min_part_vertices waits for step 6 and its vertices
+    // stay free for the growth (a small group of the match can hold a pair of the neighbouring
+    // part, which held there would keep the growth from the part's own group).
+    auto keepParts = [&](const std::vector<int>& members)
+    {
+        const std::vector<std::vector<int>> parts = p.brokenness_split_parts
+                                                        ? splitIntoParts(members)
+                                                        : std::vector<std::vector<int>>{members};
+        for (const std::vector<int>& part : parts)
+        {
+            const bool counted = static_cast<int>(part.size()) >= p.brokenness_min_vertices;
+            if (!counted && static_cast<int>(part.size()) >= p.brokenness_min_part_vertices)
+                small.push_back(part);
+            if (!counted) continue;
+            for (int v : part) taken[v] = seeded[v] = 1;
+            BrokennessGroup g;
+            g.gt_vertices = part;
+            g.transform = fitOf(part, &g.squared_error_m2);
+            b.groups.push_back(std::move(g));
+        }
+    };
+    // Step 1a (ours, brokenness_from_match_groups): the match's groups first, the biggest
+    // first, each its core pairs: found as one group by the matcher, their distances, fit and
+    // walls verified. The pairs grown from a group are not taken along (growing places a pair
+    // by the fit of the group's pairs near it, near a cut the other part's): the growth below
+    // gives them to a part. A core whose own fit is beyond the threshold (the paper's
+    // isomorphisms are not rigid fits) is left to the growth too.
+    if (p.brokenness_from_match_groups)
+    {
+        std::vector<int> order(m.isomorphism_sizes.size());
+        std::iota(order.begin(), order.end(), 0);
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int x, int y)
+                         { return m.isomorphism_sizes[x] > m.isomorphism_sizes[y]; });
+        for (int k : order)
+        {
+            std::vector<int> core;
+            for (const auto& pr : m.pairs)
+                if (pr.isomorphism == k && pr.stage != MatchStage::NeighbourGrowing &&
+                    !taken[pr.ground_truth])
+                    core.push_back(pr.ground_truth);
+            if (static_cast<int>(core.size()) < p.brokenness_min_part_vertices) continue;
+            double mse = 0.0;
+            fitOf(core, &mse);
+            if (mse <= p.brokenness_max_squared_error_m2) keepParts(core);
+        }
+    }
     for (int seed : seeds)
     {
         if (taken[seed] || seeded[seed]) continue;
@@ -395,27 +444,7 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
         // angled_8004/broken_2: 13 vertices of two parts 11.5 degrees apart, mean squared error
         // 0.186 m^2 together, 0.005 each). Each part is then split off while its own fit and
         // the other's place it apart (brokenness_split_parts).
-        const std::vector<std::vector<int>> parts =
-            p.brokenness_split_parts ? splitIntoParts(grp.gt_vertices)
-                                     : std::vector<std::vector<int>>{grp.gt_vertices};
-        for (const std::vector<int>& part : parts)
-        {
-            if (static_cast<int>(part.size()) < p.brokenness_min_vertices)
-            {
-                if (static_cast<int>(part.size()) >= p.brokenness_min_part_vertices)
-                    small.push_back(part);
-                continue;
-            }
-            BrokennessGroup g;
-            g.gt_vertices = part;
-            g.transform = fitOf(part, &g.squared_error_m2);
-            for (int v : part)
-            {
-                taken[v] = 1;
-                seeded[v] = 1;
-            }
-            b.groups.push_back(std::move(g));
-        }
+        keepParts(grp.gt_vertices);
     }
     // Brokenness counts parts misplaced against each other. Two groups whose transforms put
     // their vertices in the same places (mean squared difference of T_i(q) and T_j(q) over
@@ -549,6 +578,44 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
             for (int v : free) in_group[v] = 1;
             b.groups.push_back(std::move(grp));
         }
+    // Ours (brokenness_best_fit_part): each vertex of a counted group belongs to the group
+    // whose transform places it best. Near a cut both parts' fits place a vertex within the
+    // threshold, and whichever group met it first kept it; its walls, turned with the other
+    // part, then turn its group's walls' fit by a degree or two (step 7). One pass, each group
+    // refitted; skipped when a group would keep fewer than brokenness_min_part_vertices (or
+    // fewer than it had): a counted part stays counted.
+    if (p.brokenness_best_fit_part && b.groups.size() > 1)
+    {
+        std::vector<std::vector<int>> to(b.groups.size());
+        for (std::size_t i = 0; i < b.groups.size(); ++i)
+            for (int v : b.groups[i].gt_vertices)
+            {
+                const Eigen::Vector2d q = map.vertices[partner[v]].position_m;
+                auto errorUnder = [&](std::size_t j) {
+                    return (gt.vertices[v].position_m - b.groups[j].transform.apply(q))
+                        .squaredNorm();
+                };
+                std::size_t best = i;
+                double best_e = errorUnder(i);
+                for (std::size_t j = 0; j < b.groups.size(); ++j)
+                    if (const double e = errorUnder(j); e < best_e) best_e = e, best = j;
+                to[best].push_back(v);
+            }
+        bool kept = true;
+        for (std::size_t i = 0; i < b.groups.size(); ++i)
+            kept = kept && static_cast<int>(to[i].size()) >=
+                               std::min(p.brokenness_min_part_vertices,
+                                        static_cast<int>(b.groups[i].gt_vertices.size()));
+        for (std::size_t i = 0; i < b.groups.size() && kept; ++i)
+        {
+            std::sort(to[i].begin(), to[i].end());
+            std::vector<int> was = b.groups[i].gt_vertices;
+            std::sort(was.begin(), was.end());
+            if (to[i] == was) continue;
+            b.groups[i].gt_vertices = std::move(to[i]);
+            b.groups[i].transform = fitOf(b.groups[i].gt_vertices, &b.groups[i].squared_error_m2);
+        }
+    }
     // Ours: each counted part's turn and shift from its walls (brokenness_wall_margin_m). The
     // groups are decided by their vertices; the reported transforms change (the squared error
     // stays the vertices' fit's, the paper's figure), and only groups that the walls place

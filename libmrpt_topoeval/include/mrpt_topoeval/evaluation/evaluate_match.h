@@ -42,6 +42,20 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
      * group of 13 vertices at 0.186 m^2, each part alone 0.005). false = the paper's grown
      * groups [bool]. */
     bool brokenness_split_parts = true;
+    /** The match's groups are the brokenness candidates (issue 11: "locally consistent groups
+     * are the brokenness candidates"): each group's core pairs, verified by the matcher as one
+     * rigid part, are a group before the paper's growth runs on the other pairs, and are then
+     * split, merged and thinned as a grown group is. The growth, seeded from a vertex near a
+     * cut, can mix two parts turned 10-20 degrees about it into one compromise (held-out
+     * seeds 9-12: 10 broken maps with a group more than 3 degrees off, where the matcher's
+     * groups were right in most). false = the paper's growth from every matched vertex
+     * [bool]. */
+    bool brokenness_from_match_groups = true;
+    /** Before the walls' refinement, each vertex of a counted group moves to the group whose
+     * transform places it best (near a cut both fits place it within the threshold; the group
+     * that met it first kept it, and its walls, turned with the other part, turn the walls'
+     * fit). false = the groups as grown [bool]. */
+    bool brokenness_best_fit_part = true;
     /** One wrong pair must not turn a part's fit: a group member that the fit of the group's
      * other members places farther than this x sqrt(brokenness_max_squared_error_m2) from its
      * ground-truth vertex leaves the group (the worst first, down to brokenness_min_vertices).
