@@ -748,20 +748,32 @@ TEST(ConsistentMatching, WallsOfASmallPartAgreeAndPinItsFit)
     EXPECT_FALSE(no_walls.walls_on_both);
 }
 
+namespace
+{
+// 3000 points of a sloped wall (x = t, y = t / 2, jittered by 3 cm, t in [-10, 10] m) and 1000 of
+// an upright one at x = upright_x, both moved by `offset`.
+std::vector<Eigen::Vector2f> slopedAndUprightWalls(std::mt19937& rng, const Eigen::Vector2f& offset,
+                                                   float upright_x)
+{
+    std::uniform_real_distribution<float> along(-10.0f, 10.0f), jitter(-0.03f, 0.03f);
+    std::vector<Eigen::Vector2f> walls;
+    for (int k = 0; k < 3000; ++k)
+    {
+        const float t = along(rng);
+        walls.emplace_back(t + offset.x(), 0.5f * t + jitter(rng) + offset.y());
+        if (k % 3 == 0) walls.emplace_back(upright_x + jitter(rng), 0.5f * t + offset.y());
+    }
+    return walls;
+}
+}  // namespace
+
 TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
 {
     // near() answers from its cells (a cell holding a wall point) before it searches, and
     // around() keeps what it found per place: both must say what a look at every wall point
     // says, at every radius, for points on, near and far from the walls and outside them all.
     std::mt19937 rng(7);
-    std::uniform_real_distribution<float> along(-10.0f, 10.0f), jitter(-0.03f, 0.03f);
-    std::vector<Eigen::Vector2f> walls;
-    for (int k = 0; k < 3000; ++k)
-    {
-        const float t = along(rng);
-        walls.emplace_back(t, 0.5f * t + jitter(rng));                     // a sloped wall
-        if (k % 3 == 0) walls.emplace_back(4.0f + jitter(rng), 0.5f * t);  // a short upright one
-    }
+    const std::vector<Eigen::Vector2f> walls = slopedAndUprightWalls(rng, {0.0f, 0.0f}, 4.0f);
     const internal::WallIndex index(walls);
     auto nearest = [&](const Eigen::Vector2d& p)
     {
@@ -807,14 +819,7 @@ TEST(ConsistentMatching, WallIndexAnswersAsItsKdTree)
     // strictly within r^2) everywhere, also a hair from the radius, where the two would part if
     // the buckets missed a point the floats' rounding puts within r, or measured otherwise.
     std::mt19937 rng(11);
-    std::uniform_real_distribution<float> along(-10.0f, 10.0f), jitter(-0.03f, 0.03f);
-    std::vector<Eigen::Vector2f> walls;
-    for (int k = 0; k < 3000; ++k)
-    {
-        const float t = along(rng);
-        walls.emplace_back(t + 31.7f, 0.5f * t + jitter(rng) - 12.3f);
-        if (k % 3 == 0) walls.emplace_back(35.0f + jitter(rng), 0.5f * t - 12.3f);
-    }
+    const std::vector<Eigen::Vector2f> walls = slopedAndUprightWalls(rng, {31.7f, -12.3f}, 35.0f);
     const internal::WallIndex index(walls);
     mrpt::maps::CSimplePointsMap kd;
     for (const auto& q : walls) kd.insertPointFast(q.x(), q.y());

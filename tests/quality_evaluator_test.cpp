@@ -441,8 +441,7 @@ TEST(QualityEvaluator, TwoPartsInOneGrownGroupAreSplit)
     const std::vector<double> turns = {27.12, 38.61, 9.19};
     Parameters with = Parameters{}, without = Parameters{};
     without.quality.brokenness_split_parts = false;
-    // The rule on the paper's growth (the match's groups alone get this case right, and the
-    // best-fit part moves a vertex between part 0's two groups: session 27).
+    // The rule on the paper's growth: the match's groups alone get this case right (session 27).
     without.quality.brokenness_from_match_groups = false;
     without.quality.brokenness_best_fit_part = false;
     const QualityReport r = evaluate(gt, map, with);

@@ -251,14 +251,17 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
         }
         return sum;
     };
-    // Mean over `vs` of |p - T(q)|^2: how far a transform places a set's map vertices from
-    // their ground-truth vertices.
+    // |p - T(q)|^2 of ground-truth vertex v and its partner q: how far a transform places it.
+    auto squaredErrorOf = [&](const Transform2D& t, int v)
+    {
+        return (gt.vertices[v].position_m - t.apply(map.vertices[partner[v]].position_m))
+            .squaredNorm();
+    };
+    // Its mean over `vs`: how far a transform places a set's map vertices.
     auto squaredErrorUnder = [&](const Transform2D& t, const std::vector<int>& vs)
     {
         double sum = 0.0;
-        for (int v : vs)
-            sum += (gt.vertices[v].position_m - t.apply(map.vertices[partner[v]].position_m))
-                       .squaredNorm();
+        for (int v : vs) sum += squaredErrorOf(t, v);
         return vs.empty() ? 0.0 : sum / double(vs.size());
     };
     // Step 2b: `vs` as its parts. A split into two sets, each connected and of at least
@@ -406,10 +409,7 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
         {
             const Transform2D t = internal::hornAlign(pg, pm);
             auto fits = [&](int v)
-            {
-                return (gt.vertices[v].position_m - t.apply(map.vertices[partner[v]].position_m))
-                           .squaredNorm() <= p.brokenness_max_squared_error_m2;
-            };
+            { return squaredErrorOf(t, v) <= p.brokenness_max_squared_error_m2; };
             std::vector<int> members;
             std::vector<char> mark(gt.vertices.size(), 0);
             std::queue<int> q;
@@ -587,19 +587,17 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     if (p.brokenness_best_fit_part && b.groups.size() > 1)
     {
         std::vector<std::vector<int>> to(b.groups.size());
+        std::vector<char> changed(b.groups.size(), 0);
         for (std::size_t i = 0; i < b.groups.size(); ++i)
             for (int v : b.groups[i].gt_vertices)
             {
-                const Eigen::Vector2d q = map.vertices[partner[v]].position_m;
-                auto errorUnder = [&](std::size_t j) {
-                    return (gt.vertices[v].position_m - b.groups[j].transform.apply(q))
-                        .squaredNorm();
-                };
                 std::size_t best = i;
-                double best_e = errorUnder(i);
+                double best_e = squaredErrorOf(b.groups[i].transform, v);
                 for (std::size_t j = 0; j < b.groups.size(); ++j)
-                    if (const double e = errorUnder(j); e < best_e) best_e = e, best = j;
+                    if (const double e = squaredErrorOf(b.groups[j].transform, v); e < best_e)
+                        best_e = e, best = j;
                 to[best].push_back(v);
+                if (best != i) changed[i] = changed[best] = 1;
             }
         bool kept = true;
         for (std::size_t i = 0; i < b.groups.size(); ++i)
@@ -608,10 +606,8 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                                         static_cast<int>(b.groups[i].gt_vertices.size()));
         for (std::size_t i = 0; i < b.groups.size() && kept; ++i)
         {
+            if (!changed[i]) continue;
             std::sort(to[i].begin(), to[i].end());
-            std::vector<int> was = b.groups[i].gt_vertices;
-            std::sort(was.begin(), was.end());
-            if (to[i] == was) continue;
             b.groups[i].gt_vertices = std::move(to[i]);
             b.groups[i].transform = fitOf(b.groups[i].gt_vertices, &b.groups[i].squared_error_m2);
         }

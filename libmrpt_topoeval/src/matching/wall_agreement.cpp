@@ -46,10 +46,8 @@ WallIndex::WallIndex(const std::vector<Eigen::Vector2f>& points)
     for (const Eigen::Vector2f& q : points)
     {
         m_points.insertPointFast(q.x(), q.y());
-        const Eigen::Vector2d d = q.cast<double>();
-        const bool first = m_points.size() == 1;
-        m_lo = first ? d : Eigen::Vector2d(m_lo.cwiseMin(d));
-        m_hi = first ? d : Eigen::Vector2d(m_hi.cwiseMax(d));
+        m_lo = m_lo.cwiseMin(q.cast<double>());
+        m_hi = m_hi.cwiseMax(q.cast<double>());
     }
 }
 
@@ -65,14 +63,12 @@ void WallIndex::fill(Buckets& b, double size) const
     const auto& xs = m_points.getPointsBufferRef_x();
     const auto& ys = m_points.getPointsBufferRef_y();
     if (xs.empty() || !(size > 0.0)) return;
-    const auto [x0, x1] = std::minmax_element(xs.begin(), xs.end());
-    const auto [y0, y1] = std::minmax_element(ys.begin(), ys.end());
     // Counted in doubles first: a tiny size must not overflow the count.
-    const double cols = std::floor(along(*x1, *x0, size)) + 1.0;
-    const double rows = std::floor(along(*y1, *y0, size)) + 1.0;
+    const double cols = std::floor(along(m_hi.x(), m_lo.x(), size)) + 1.0;
+    const double rows = std::floor(along(m_hi.y(), m_lo.y(), size)) + 1.0;
     if (!(cols * rows <= double(kMaxBuckets))) return;
     b.size = size;
-    b.origin = {*x0, *y0};
+    b.origin = m_lo;
     b.nx = long(cols), b.ny = long(rows);
     std::vector<std::uint32_t> of(xs.size());
     b.first.assign(std::size_t(b.nx * b.ny) + 1, 0);
@@ -103,17 +99,15 @@ const WallIndex::Cells& WallIndex::cellsFor(double r) const
     if (!fresh || empty() || !(r > 0.0)) return c;
     const auto& xs = m_points.getPointsBufferRef_x();
     const auto& ys = m_points.getPointsBufferRef_y();
-    const auto [x0, x1] = std::minmax_element(xs.begin(), xs.end());
-    const auto [y0, y1] = std::minmax_element(ys.begin(), ys.end());
     const double size = r / (2.0 * std::sqrt(2.0));
     // Counted in doubles first: a tiny radius must not overflow the cell count.
-    const double cols = std::floor((*x1 - *x0) / size) + 1.0;
-    const double rows = std::floor((*y1 - *y0) / size) + 1.0;
+    const double cols = std::floor(along(m_hi.x(), m_lo.x(), size)) + 1.0;
+    const double rows = std::floor(along(m_hi.y(), m_lo.y(), size)) + 1.0;
     if (cols * rows <= double(kMaxNearCells))
     {
         const long nx = long(cols), ny = long(rows);
         c.size = size;
-        c.origin = {*x0, *y0};
+        c.origin = m_lo;
         c.nx = nx, c.ny = ny;
         c.held.assign(std::size_t(nx * ny), 0);
         for (std::size_t i = 0; i < xs.size(); ++i)
@@ -147,21 +141,18 @@ bool WallIndex::near(const Eigen::Vector2d& p, double r) const
     if (!b.first.empty())
     {
         const double fx = along(qx, b.origin.x(), b.size), fy = along(qy, b.origin.y(), b.size);
-        // More than a bucket outside them all: no wall point within r.
-        if (fx < -1.0 || fy < -1.0 || fx >= double(b.nx + 1) || fy >= double(b.ny + 1))
+        // More than a bucket outside them all, or not a number: no wall point within r.
+        if (!(fx >= -1.0 && fy >= -1.0 && fx < double(b.nx + 1) && fy < double(b.ny + 1)))
             return false;
-        if (fx >= -1.0 && fy >= -1.0)  // not NaN
-        {
-            const long ix = long(std::floor(fx)), iy = long(std::floor(fy));
-            for (long y = std::max(0L, iy - 1); y <= std::min(b.ny - 1, iy + 1); ++y)
-                for (long x = std::max(0L, ix - 1); x <= std::min(b.nx - 1, ix + 1); ++x)
-                {
-                    const std::size_t k = std::size_t(y * b.nx + x);
-                    for (std::uint32_t i = b.first[k]; i < b.first[k + 1]; ++i)
-                        if (squaredDistance(qx, qy, b.xs[i], b.ys[i]) <= r2) return true;
-                }
-            return false;
-        }
+        const long ix = long(std::floor(fx)), iy = long(std::floor(fy));
+        for (long y = std::max(0L, iy - 1); y <= std::min(b.ny - 1, iy + 1); ++y)
+            for (long x = std::max(0L, ix - 1); x <= std::min(b.nx - 1, ix + 1); ++x)
+            {
+                const std::size_t k = std::size_t(y * b.nx + x);
+                for (std::uint32_t i = b.first[k]; i < b.first[k + 1]; ++i)
+                    if (squaredDistance(qx, qy, b.xs[i], b.ys[i]) <= r2) return true;
+            }
+        return false;
     }
     if (beyondWalls(p, r)) return false;
     return m_points.kdTreeClosestPoint2DsqrError(qx, qy) <= r2;

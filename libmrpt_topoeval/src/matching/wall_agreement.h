@@ -11,6 +11,7 @@
 #include <mrpt_topoeval/geometry/Transform2D.h>
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <tuple>
@@ -42,8 +43,10 @@ public:
 
 private:
     mrpt::maps::CSimplePointsMap m_points;
-    /** The wall points' bounding box (empty: lo above hi). */
-    Eigen::Vector2d m_lo{1.0, 1.0}, m_hi{0.0, 0.0};
+    /** The wall points' bounding box, the cells' and buckets' origin at its lower left (no
+     * wall point: lo above hi). */
+    Eigen::Vector2d m_lo{Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity())};
+    Eigen::Vector2d m_hi{Eigen::Vector2d::Constant(-std::numeric_limits<double>::infinity())};
     /** True if no wall point can lie within r of p: p is not finite, or farther than r (and a
      * margin for the floats) from the walls' box. MRPT's nearest-point search is not asked
      * then: it leaves its result unset when no distance is finite (a query at 1e30). */
