@@ -165,7 +165,10 @@ const std::vector<Eigen::Vector2d>& WallIndex::around(const Eigen::Vector2d& p, 
     if (!fresh || empty()) return out;
     if (!m_around_buckets)
     {
-        m_around_buckets.emplace();
+        // Buckets{} rather than emplace(): clang decides a nested struct with default member
+        // initialisers is not default-constructible while its enclosing class is incomplete
+        // (std::optional<Buckets> is declared there) and remembers that answer.
+        m_around_buckets.emplace(Buckets{});
         fill(*m_around_buckets, kAroundBucket_m);
     }
     // The query, and nanoflann's radius search's test (strictly within r^2), as the KD-tree.
