@@ -553,6 +553,31 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     // when its own fit is good and every counted group places its map vertices clearly
     // elsewhere (mean squared gap of at least brokenness_part_min_gap_m2), it is a part turned
     // against the rest, as the parts of a map broken three times often are.
+    // Or when its walls set it apart (brokenness_part_wall_ratio): 3-4 vertices near the cut
+    // sit within a metre of where the neighbouring part's fit puts them even when their part
+    // is turned 12 degrees; the hundreds of wall points around them are not. They must agree
+    // under the part's own fit, refined by them (at least pair_wall_min_agreement), and every
+    // counted group's fit must keep at most the ratio of that agreement.
+    const double wall_tolerance = internal::pairWallTolerance(gt, map, p);
+    auto wallsSetApart = [&](const std::vector<int>& part, const Transform2D& fit)
+    {
+        if (!(p.brokenness_part_wall_ratio > 0.0) || !(p.pair_wall_margin_m > 0.0) || !walls.ok())
+            return false;
+        std::vector<std::pair<int, int>> pairs;
+        for (int v : part) pairs.emplace_back(v, partner[v]);
+        // The pinning is not asked for (a share above 1 never reaches it): two fits are
+        // compared, and walls that cannot tell them apart give both the same share.
+        auto share = [&](const Transform2D& t)
+        {
+            return internal::wallAgreement(gt, map, walls.gt(), walls.map(), pairs, t,
+                                           p.pair_wall_margin_m, wall_tolerance, 2.0);
+        };
+        const internal::WallAgreement own = share(byWalls(part, fit));
+        if (!own.walls_on_both || own.share < p.pair_wall_min_agreement) return false;
+        for (const auto& g : b.groups)
+            if (share(g.transform).share > p.brokenness_part_wall_ratio * own.share) return false;
+        return true;
+    };
     std::stable_sort(small.begin(), small.end(),
                      [](const auto& x, const auto& y) { return x.size() > y.size(); });
     std::vector<char> in_group(gt.vertices.size(), 0);
@@ -569,11 +594,15 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
             grp.gt_vertices = free;
             grp.transform = fitOf(free, &grp.squared_error_m2);
             if (grp.squared_error_m2 > p.brokenness_max_squared_error_m2) continue;
-            bool separate = true;
+            // The counted group that places it nearest: at least the clear gap, or beyond the
+            // paper's threshold (where its growth would not take the part in) with the walls.
+            double gap = std::numeric_limits<double>::infinity();
             for (const auto& g : b.groups)
-                separate = separate &&
-                           squaredGap(g.transform, grp.transform, free) / double(free.size()) >=
-                               p.brokenness_part_min_gap_m2;
+                gap = std::min(gap,
+                               squaredGap(g.transform, grp.transform, free) / double(free.size()));
+            const bool separate =
+                gap >= p.brokenness_part_min_gap_m2 ||
+                (gap > p.brokenness_max_squared_error_m2 && wallsSetApart(free, grp.transform));
             if (!separate) continue;
             for (int v : free) in_group[v] = 1;
             b.groups.push_back(std::move(grp));

@@ -18,6 +18,13 @@ std::optional<Transform2D> alignWalls(const TopologyGraph& gt, const TopologyGra
                            std::max(std::sqrt(p.brokenness_max_squared_error_m2), reach_m));
 }
 
+double pairWallTolerance(const TopologyGraph& gt, const TopologyGraph& map,
+                         const QualityParameters& p)
+{
+    return std::max(p.pair_wall_tolerance_m,
+                    1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
+}
+
 void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& m,
                   const Transform2D& t, const QualityParameters& p, Walls& walls,
                   std::vector<Eigen::Vector2d>& places, std::vector<double>& slack,
@@ -26,8 +33,7 @@ void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const Graph
     by_walls = 0;
     if (!(p.pair_wall_margin_m > 0.0) || !walls.ok()) return;
     const WallIndex &gt_walls = walls.gt(), &map_walls = walls.map();
-    const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
-    const double tolerance = std::max(p.pair_wall_tolerance_m, 1.5 * res);
+    const double tolerance = pairWallTolerance(gt, map, p);
     for (std::size_t i = 0; i < m.pairs.size(); ++i)
     {
         const auto& a = gt.vertices[static_cast<std::size_t>(m.pairs[i].ground_truth)];

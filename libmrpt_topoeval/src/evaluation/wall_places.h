@@ -30,6 +30,11 @@ std::optional<Transform2D> alignWalls(const TopologyGraph& gt, const TopologyGra
                                       double margin_m, const Transform2D& start,
                                       const QualityParameters& p, double reach_m = 0.0);
 
+// A wall point agrees with the other map's when one lies within this: pair_wall_tolerance_m,
+// at least 1.5 cells of the coarser map (a point's place is only known to its cell).
+double pairWallTolerance(const TopologyGraph& gt, const TopologyGraph& map,
+                         const QualityParameters& p);
+
 // Both graphs' wall points in KD-trees, built on first use and shared by the steps that align
 // walls (pair places, brokenness groups' turns). `ok()` is false when either graph has none.
 class Walls
