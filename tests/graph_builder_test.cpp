@@ -813,3 +813,29 @@ TEST(GraphBuilder, ChainsFromTheSkeletonEqualStoredSegmentsDissolved)
         EXPECT_EQ(ring_vertex->clearance, 3.0);
     }
 }
+
+// The alpha cut spares free space that does not reach the map's edge (alpha_keep_enclosed):
+// standard corpus case multi_wing_1001/broken_1 (tests/data/enclosed_free). Its broken map
+// draws a wing apart from the rest, an island of walls of its own, enclosed by them and by
+// unknown; the paper keeps the longest polygon of the alpha shape only, and the wing's 12
+// vertices (all east of x = 8.5 m, the rest west of 6.7 m) went with the outside.
+TEST(GraphBuilder, AlphaCutSparesEnclosedFreeSpace)
+{
+    const auto [gt, map] = corpusCase("enclosed_free", "multi_wing_1001_broken_1");
+    GraphBuilderParameters paper;
+    paper.alpha_keep_enclosed = false;
+    const TopologyGraph g = buildTopologyGraph(map);
+    const TopologyGraph g0 = buildTopologyGraph(map, paper);
+    expectWellFormed(g);
+    auto inWing = [](const TopologyGraph& t)
+    {
+        return std::count_if(t.vertices.begin(), t.vertices.end(),
+                             [](const TopoVertex& v) { return v.position_m.x() > 8.5; });
+    };
+    EXPECT_EQ(inWing(g), 12);
+    EXPECT_EQ(inWing(g0), 0);
+    EXPECT_EQ(g.vertices.size(), g0.vertices.size() + 12);
+    // The ground truth, one building, has no free space outside the polygon: the same graph.
+    EXPECT_EQ(buildTopologyGraph(gt).vertices.size(),
+              buildTopologyGraph(gt, paper).vertices.size());
+}

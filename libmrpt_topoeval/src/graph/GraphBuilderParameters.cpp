@@ -48,6 +48,8 @@ TOPOEVAL_PARAMETER_TABLE(
          "mark remaining dead ends shorter than this as spurious", atLeast(0)),
     real(TOPOEVAL_KEY(alpha_radius_m), "m",
          "alpha-shape radius of the outer boundary (paper: 2.5); 0 = no cut", atLeast(0)),
+    flag(TOPOEVAL_KEY(alpha_keep_enclosed),
+         "the cut spares free space that does not reach the map's edge (false = paper)"),
     // Infinity keeps only the biggest part, as the paper does.
     real(TOPOEVAL_KEY(min_component_length_m), "m",
          "keep every connected part with at least this much edge length (and the "

@@ -242,6 +242,26 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
     return filled;
 }
 
+// Ours (alpha_keep_enclosed): the free cells that reach the edge of the grid region through
+// free cells (4-connected): the page around a floor plan, the open side of a cropped map. Free
+// space enclosed by walls or unknown is the map's inside, whatever the alpha polygon says.
+std::vector<std::uint8_t> freeReachingEdge(const std::vector<std::uint8_t>& cls, int sx, int sy)
+{
+    constexpr std::uint8_t kReached = 3;
+    std::vector<std::uint8_t> mark(cls);
+    cv::Mat grid(sy, sx, CV_8UC1, mark.data());
+    auto reach = [&](int x, int y)
+    {
+        if (grid.at<std::uint8_t>(y, x) == kFree)
+            cv::floodFill(grid, cv::Point(x, y), cv::Scalar(kReached), nullptr, cv::Scalar(0),
+                          cv::Scalar(0), 4);
+    };
+    for (int x = 0; x < sx; ++x) reach(x, 0), reach(x, sy - 1);
+    for (int y = 0; y < sy; ++y) reach(0, y), reach(sx - 1, y);
+    for (auto& m : mark) m = m == kReached;
+    return mark;
+}
+
 // Islands: 8-connected components of non-free cells (occupied or unknown) surrounded by free
 // space, not touching the grid's edge, whose smallest enclosing circle (of the cells'
 // squares) is narrower than `min_size_cells`, become free. Returns how many were removed.
@@ -458,6 +478,10 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
             for (int x = 0; x < w; ++x)
                 vin.keep_mask[static_cast<std::size_t>(oy + y) * sx + ox + x] = at(x, y) == kFree;
     }
+    // For the alpha cut (step 4): which free cells reach the region's edge, i.e. the map's.
+    const std::vector<std::uint8_t> open_free =
+        params.alpha_radius_m > 0.0 && params.alpha_keep_enclosed ? freeReachingEdge(cls, w, h)
+                                                                  : std::vector<std::uint8_t>();
     std::vector<std::uint8_t>().swap(cls);
     vin.min_clearance_cells = params.min_clearance_m / res;
     vin.alpha_radius_cells = params.alpha_radius_m / res;
@@ -503,8 +527,18 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
         stats.alpha_polygon_segments = outer.size();
         if (outer.size() >= 3)
         {
-            g.cutOutside([&](const Eigen::Vector2d& p)
-                         { return internal::pointInPolygon(outer, p); });
+            // Ours (alpha_keep_enclosed): outside the polygon, only free space that reaches
+            // the map's edge is the outside; a room the polygon misses (wider than the alpha
+            // radius, or walled by a line of collinear cells, which makes no faces) stays.
+            auto inside = [&](const Eigen::Vector2d& p)
+            {
+                if (internal::pointInPolygon(outer, p)) return true;
+                if (open_free.empty()) return false;
+                const long x = std::lround(p.x()) - ox, y = std::lround(p.y()) - oy;
+                if (x < 0 || y < 0 || x >= w || y >= h) return false;
+                return open_free[static_cast<std::size_t>(y) * w + x] == 0;
+            };
+            g.cutOutside(inside);
             g.dissolveDegreeTwo();
             // The cut leaves stubs where corridors crossed the boundary: prune them as above.
             g.pruneDeadEnds(params.prune_dead_end_length_m / res, params.corner_spur_ratio,

@@ -92,6 +92,13 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
     /** Radius of the alpha shape whose longest polygon is the map's outer boundary; vertices
      * outside it are removed (paper: 2.5 m) [m]. 0 disables the cut. */
     double alpha_radius_m = 2.50;
+    /** The alpha cut removes only what lies in free space reaching the map's edge (the page
+     * around a floor plan). The polygon is made of the walls alone: a room wider than twice the
+     * radius that touches the outer wall, or one walled by a line of collinear cells (no faces),
+     * falls outside it, though walls or unknown enclose it (floorplan lab_intel's stair hall:
+     * 4 vertices). Free space enclosed by walls or unknown is the map's inside. false = the
+     * paper's cut of everything outside the polygon [bool]. */
+    bool alpha_keep_enclosed = true;
     /** Connected parts of the graph whose total edge length is at least this are all kept; the
      * longest part is always kept. The paper keeps only the biggest part, but a map cut into
      * pieces by a narrow or closed door then loses whole regions, and which piece is biggest
