@@ -168,6 +168,22 @@ void closeObstacleGaps(std::vector<std::uint8_t>& cls, int sx, int sy, double ra
                  { c(tile).setTo(kOccupied, closed); });
 }
 
+// Every region of `from` cells that touches the grid's edge becomes `to`: OpenCV's scan-line
+// flood fill from each such edge cell, 4- or 8-connected.
+void floodFromEdge(std::vector<std::uint8_t>& cls, int sx, int sy, std::uint8_t from,
+                   std::uint8_t to, int connectivity)
+{
+    cv::Mat grid(sy, sx, CV_8UC1, cls.data());
+    auto reach = [&](int x, int y)
+    {
+        if (grid.at<std::uint8_t>(y, x) == from)
+            cv::floodFill(grid, cv::Point(x, y), cv::Scalar(to), nullptr, cv::Scalar(0),
+                          cv::Scalar(0), connectivity);
+    };
+    for (int x = 0; x < sx; ++x) reach(x, 0), reach(x, sy - 1);
+    for (int y = 0; y < sy; ++y) reach(0, y), reach(sx - 1, y);
+}
+
 // Enclosed unknown regions: 8-connected components of unknown cells that do not reach the
 // grid's edge through unknown cells, and whose outer neighbours (4-neighbours outside the
 // component) are at least `min_free_share` free cells, become free. Such a region is free space
@@ -215,16 +231,8 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
             }
         }
     };
-    // The outside (often most of the grid) by OpenCV's scan-line flood fill, 8-connected.
-    cv::Mat grid(sy, sx, CV_8UC1, cls.data());
-    auto outside = [&](int x, int y)
-    {
-        if (grid.at<std::uint8_t>(y, x) == kUnknown)
-            cv::floodFill(grid, cv::Point(x, y), cv::Scalar(kOutside), nullptr, cv::Scalar(0),
-                          cv::Scalar(0), 8);
-    };
-    for (int x = 0; x < sx; ++x) outside(x, 0), outside(x, sy - 1);
-    for (int y = 0; y < sy; ++y) outside(0, y), outside(sx - 1, y);
+    // The outside (often most of the grid), 8-connected.
+    floodFromEdge(cls, sx, sy, kUnknown, kOutside, 8);
     std::size_t filled = 0;
     std::vector<std::size_t> cells;
     for (std::size_t start = 0; start < n; ++start)
@@ -249,15 +257,7 @@ std::vector<std::uint8_t> freeReachingEdge(const std::vector<std::uint8_t>& cls,
 {
     constexpr std::uint8_t kReached = 3;
     std::vector<std::uint8_t> mark(cls);
-    cv::Mat grid(sy, sx, CV_8UC1, mark.data());
-    auto reach = [&](int x, int y)
-    {
-        if (grid.at<std::uint8_t>(y, x) == kFree)
-            cv::floodFill(grid, cv::Point(x, y), cv::Scalar(kReached), nullptr, cv::Scalar(0),
-                          cv::Scalar(0), 4);
-    };
-    for (int x = 0; x < sx; ++x) reach(x, 0), reach(x, sy - 1);
-    for (int y = 0; y < sy; ++y) reach(0, y), reach(sx - 1, y);
+    floodFromEdge(mark, sx, sy, kFree, kReached, 4);
     for (auto& m : mark) m = m == kReached;
     return mark;
 }
