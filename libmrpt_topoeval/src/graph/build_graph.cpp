@@ -479,9 +479,13 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
                 vin.keep_mask[static_cast<std::size_t>(oy + y) * sx + ox + x] = at(x, y) == kFree;
     }
     // For the alpha cut (step 4): which free cells reach the region's edge, i.e. the map's.
-    const std::vector<std::uint8_t> open_free =
-        params.alpha_radius_m > 0.0 && params.alpha_keep_enclosed ? freeReachingEdge(cls, w, h)
-                                                                  : std::vector<std::uint8_t>();
+    // None on most robot maps (unknown all around): then nothing is outside, and the mask, a
+    // byte a cell, is not kept.
+    const bool keep_enclosed = params.alpha_radius_m > 0.0 && params.alpha_keep_enclosed;
+    std::vector<std::uint8_t> open_free =
+        keep_enclosed ? freeReachingEdge(cls, w, h) : std::vector<std::uint8_t>();
+    if (std::find(open_free.begin(), open_free.end(), 1) == open_free.end())
+        std::vector<std::uint8_t>().swap(open_free);
     std::vector<std::uint8_t>().swap(cls);
     vin.min_clearance_cells = params.min_clearance_m / res;
     vin.alpha_radius_cells = params.alpha_radius_m / res;
@@ -533,7 +537,8 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
             auto inside = [&](const Eigen::Vector2d& p)
             {
                 if (internal::pointInPolygon(outer, p)) return true;
-                if (open_free.empty()) return false;
+                if (!keep_enclosed) return false;
+                if (open_free.empty()) return true;  // no free space reaches the map's edge
                 const long x = std::lround(p.x()) - ox, y = std::lround(p.y()) - oy;
                 if (x < 0 || y < 0 || x >= w || y >= h) return false;
                 return open_free[static_cast<std::size_t>(y) * w + x] == 0;

@@ -39,8 +39,9 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
      * transform keeps at most this ratio of that agreement. 3-4 vertices near a cut sit within
      * a metre of where the neighbouring part's fit puts them though their part is turned 12
      * degrees (corridor_office_1004/broken_3: agreement 0.78 under its own fit, 0.23 under the
-     * neighbour's). Small candidates of maps that are not broken keep at least 0.95 of it
-     * (generated) and 0.55 (real pairs) (doc/quality.md). 0 = the vertices' gap only [ratio]. */
+     * neighbour's). Small candidates of generated maps that are not broken keep 0.96-1.00 of
+     * it, of real pairs 0.55-1.00 (0.17 in the bent Intel map) (doc/quality.md). 0 = the
+     * vertices' gap only [ratio]. */
     double brokenness_part_wall_ratio = 0.5;
     /** A grown group is split into two parts when two fits, each of a connected set of at
      * least brokenness_min_part_vertices of its vertices and each within

@@ -95,9 +95,10 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
     /** The alpha cut removes only what lies in free space reaching the map's edge (the page
      * around a floor plan). The polygon is made of the walls alone: a room wider than twice the
      * radius that touches the outer wall, or one walled by a line of collinear cells (no faces),
-     * falls outside it, though walls or unknown enclose it (floorplan lab_intel's stair hall:
-     * 4 vertices). Free space enclosed by walls or unknown is the map's inside. false = the
-     * paper's cut of everything outside the polygon [bool]. */
+     * falls outside it, though walls or unknown enclose it (floorplan lab_intel's stair hall),
+     * and so does a wing a broken map drew apart (its own loop, not the longest). Free space
+     * enclosed by walls or unknown is the map's inside. false = the paper's cut of everything
+     * outside the polygon [bool]. */
     bool alpha_keep_enclosed = true;
     /** Connected parts of the graph whose total edge length is at least this are all kept; the
      * longest part is always kept. The paper keeps only the biggest part, but a map cut into
