@@ -253,8 +253,15 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
 // Ours (alpha_keep_enclosed): the free cells that reach the edge of the grid region through
 // free cells (4-connected): the page around a floor plan, the open side of a cropped map. Free
 // space enclosed by walls or unknown is the map's inside, whatever the alpha polygon says.
+// 1 where a cell reaches the edge; empty when no free cell lies on the edge (a robot map,
+// unknown all around: nothing is outside, and no copy of the grid is made).
 std::vector<std::uint8_t> freeReachingEdge(const std::vector<std::uint8_t>& cls, int sx, int sy)
 {
+    auto freeAt = [&](int x, int y) { return cls[static_cast<std::size_t>(y) * sx + x] == kFree; };
+    bool open = false;
+    for (int x = 0; x < sx && !open; ++x) open = freeAt(x, 0) || freeAt(x, sy - 1);
+    for (int y = 0; y < sy && !open; ++y) open = freeAt(0, y) || freeAt(sx - 1, y);
+    if (!open) return {};
     constexpr std::uint8_t kReached = 3;
     std::vector<std::uint8_t> mark(cls);
     floodFromEdge(mark, sx, sy, kFree, kReached, 4);
@@ -479,13 +486,10 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
                 vin.keep_mask[static_cast<std::size_t>(oy + y) * sx + ox + x] = at(x, y) == kFree;
     }
     // For the alpha cut (step 4): which free cells reach the region's edge, i.e. the map's.
-    // None on most robot maps (unknown all around): then nothing is outside, and the mask, a
-    // byte a cell, is not kept.
+    // None on most robot maps (unknown all around): then nothing is outside.
     const bool keep_enclosed = params.alpha_radius_m > 0.0 && params.alpha_keep_enclosed;
-    std::vector<std::uint8_t> open_free =
+    const std::vector<std::uint8_t> open_free =
         keep_enclosed ? freeReachingEdge(cls, w, h) : std::vector<std::uint8_t>();
-    if (std::find(open_free.begin(), open_free.end(), 1) == open_free.end())
-        std::vector<std::uint8_t>().swap(open_free);
     std::vector<std::uint8_t>().swap(cls);
     vin.min_clearance_cells = params.min_clearance_m / res;
     vin.alpha_radius_cells = params.alpha_radius_m / res;
