@@ -814,6 +814,65 @@ TEST(GraphBuilder, ChainsFromTheSkeletonEqualStoredSegmentsDissolved)
     }
 }
 
+// A map that says its outside is unknown (alpha_page_max_edge_unknown): a hall with two pillars,
+// walled north, south and east with unknown beyond, cut open by the map's west edge (a crop
+// through it). Its free space reaches the map's edge, and the alpha polygon (walls only, the
+// hall wider than twice the radius) leaves it out; but the map's edge is mostly unknown, so
+// that free space is the map's inside and the hall's skeleton, the loops around the pillars,
+// stays. The same hall drawn on a white page (the outside free) is the page's: it is cut.
+TEST(GraphBuilder, AlphaCutSparesAHallTheMapsEdgeCuts)
+{
+    auto hall = [](bool page)
+    {
+        GridSketch s(26.0, 18.0);
+        if (page)
+            s.carve(0.0, 0.0, 26.0, 18.0);
+        else
+            s.unknown(0.0, 0.0, 26.0, 18.0);
+        s.fill(0.0, 1.7, 22.3, 2.0).fill(0.0, 14.0, 22.3, 14.3).fill(22.0, 1.7, 22.3, 14.3);
+        s.carve(0.0, 2.0, 22.0, 14.0);
+        s.fill(9.7, 7.7, 10.3, 8.3).fill(15.7, 7.7, 16.3, 8.3);
+        return s;
+    };
+    auto inHall = [](const TopologyGraph& g)
+    {
+        return std::count_if(g.vertices.begin(), g.vertices.end(),
+                             [](const TopoVertex& v)
+                             {
+                                 return v.position_m.x() > 6.0 && v.position_m.x() < 21.0 &&
+                                        v.position_m.y() > 3.0 && v.position_m.y() < 13.0;
+                             });
+    };
+    GraphBuilderParameters session28;  // free space at the map's edge is always outside
+    session28.alpha_page_max_edge_unknown = 1.0;
+    const GridSketch cropped = hall(false), page = hall(true);
+    const TopologyGraph g = buildTopologyGraph(cropped.grid());
+    expectWellFormed(g);
+    // The pillars stand in two loops that share an edge: its two junctions, between them.
+    EXPECT_EQ(inHall(g), 2);
+    EXPECT_EQ(inHall(buildTopologyGraph(cropped.grid(), session28)), 0);
+    EXPECT_EQ(inHall(buildTopologyGraph(page.grid())), 0);
+    EXPECT_EQ(inHall(buildTopologyGraph(page.grid(), session28)), 0);
+}
+
+// The same on standard corpus case column_hall_1002/crop_0.75 (tests/data/cropped_hall): the
+// crop cuts the building's south rooms and corridor open, and both column halls' free space
+// reaches the map's edge through them. With free space at the edge always outside (session 28)
+// the cut left 2 of the map's vertices; its edge being mostly unknown, it keeps 38. The ground
+// truth (unknown all around, no free cell on its edge) is the same either way.
+TEST(GraphBuilder, AlphaCutSparesACroppedMapsInside)
+{
+    const auto [gt, map] = corpusCase("cropped_hall", "column_hall_1002_crop_0.75");
+    GraphBuilderParameters session28;
+    session28.alpha_page_max_edge_unknown = 1.0;
+    const TopologyGraph g = buildTopologyGraph(map);
+    expectWellFormed(g);
+    EXPECT_EQ(g.vertices.size(), 38u);
+    EXPECT_EQ(buildTopologyGraph(map, session28).vertices.size(), 2u);
+    EXPECT_EQ(buildTopologyGraph(gt).vertices.size(), 66u);
+    EXPECT_EQ(buildTopologyGraph(gt, session28).vertices.size(), 66u);
+}
+
 // The alpha cut spares free space that does not reach the map's edge (alpha_keep_enclosed):
 // standard corpus case multi_wing_1001/broken_1 (tests/data/enclosed_free). Its broken map
 // draws a wing apart from the rest, an island of walls of its own, enclosed by them and by

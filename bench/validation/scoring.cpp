@@ -97,6 +97,13 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     CaseScore s;
     s.gt_vertices = gt.numNonSpuriousVertices();
     s.map_vertices = map.numNonSpuriousVertices();
+    for (const auto& g : gt.vertices)
+    {
+        if (g.spurious) continue;
+        const int kept = truth.kept ? truth.kept(g.position_m, g.clearance_m) : 2;
+        s.gt_kept += kept == 2 ? 1 : 0;
+        s.gt_at_cut += kept == 1 ? 1 : 0;
+    }
     // The truth places of every map vertex, once: (part, ground-truth position), the first
     // the most likely; a vertex on a broken map's seam has one per part that made it.
     std::vector<std::vector<std::pair<int, Eigen::Vector2d>>> places(map.vertices.size());

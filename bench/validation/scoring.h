@@ -67,6 +67,11 @@ struct CaseScore
     /** Ground-truth vertices that truly have a counterpart: a map vertex that the truth maps
      * within the pair tolerance of it. */
     std::size_t gt_with_counterpart = 0;
+    /** Ground-truth vertices in the part of the map that was kept, by Truth::kept (all of them
+     * when the whole ground truth is kept), and those at the cut (their centre kept, their
+     * clearance disc cut): a crop's coverage should lie between the share of the first and
+     * that of both. Unlike gt_with_counterpart they do not depend on the map's graph. */
+    std::size_t gt_kept = 0, gt_at_cut = 0;
     std::size_t matched = 0, true_pairs = 0;
     /** False pairs made by a group's core (isomorphism) and by growing (neighbour growing). */
     std::size_t false_core = 0, false_grown = 0;

@@ -25,6 +25,25 @@ struct CaseResult
     std::string error;          //!< Non-empty when the case threw.
 };
 
+/** A crop's coverage against the share of ground-truth vertices it keeps. */
+struct CropErrors
+{
+    std::size_t crops = 0;
+    double mean = 0.0;  //!< Mean distance of coverage to the share kept.
+    double max = 0.0;   //!< The largest, and its case.
+    std::string max_case;
+    /** Over the crops that keep at least 3 ground-truth vertices (the fewest a group holds:
+     * with fewer, no matcher that asks a group for its pairs can match the share): how many,
+     * how many within kCropCoverageTolerance, the largest error. Vertices at the cut count. */
+    std::size_t observable = 0, observable_within = 0;
+    double max_observable = 0.0;
+    /** Adds a crop whose coverage is `coverage`, which keeps `kept` of `total` vertices and
+     * `at_cut` more that it may or may not keep: the error is the coverage's distance to the
+     * shares between kept / total and (kept + at_cut) / total. */
+    void add(const std::string& id, double coverage, std::size_t kept, std::size_t at_cut,
+             std::size_t total);
+};
+
 /** Aggregates of a set of cases. Precision and recall are pooled (sums of pairs). */
 struct Aggregate
 {
@@ -46,15 +65,10 @@ struct Aggregate
     /** Broken cases not exactly right, by brokenCause(). */
     std::map<std::string, std::size_t> broken_causes;
     double mean_coverage = 0.0, max_coverage = 0.0, mean_quality = 0.0;
-    double mean_coverage_error = 0.0;  //!< Crops: mean |coverage - share with counterpart|.
-    /** Crops: the largest |coverage - share with counterpart| and its case; and the largest over
-     * the crops that keep at least 3 ground-truth vertices with a counterpart (the fewest a
-     * group holds: with fewer, no matcher that asks a group for its pairs can match the share),
-     * with how many crops those are and how many are within kCropCoverageTolerance. */
-    double max_coverage_error = 0.0;
-    std::string max_coverage_error_case;
-    double max_observable_coverage_error = 0.0;
-    std::size_t observable_crops = 0, observable_crops_within = 0;
+    /** Crops: |coverage - share of ground-truth vertices kept|, the share counted two ways:
+     * `crop_kept` by the crop's rectangle (CaseScore::gt_kept, the truth; since session 29) and
+     * `crop_counterparts` by the vertices with a counterpart in the map's graph (before). */
+    CropErrors crop_kept, crop_counterparts;
     double mean_time_ms = 0.0;
 };
 

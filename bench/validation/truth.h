@@ -70,5 +70,11 @@ struct Truth
      * that their free space be kept (a generator that lost it greyed out a broken map's turned
      * rooms until session 9). */
     bool keeps_free_space = false;
+    /** Crops: where a ground-truth vertex at p_gt with that clearance lies against the part of
+     * the map that was kept (the crop's rectangle): 2 kept, its clearance disc (where the walls
+     * that make it lie) inside; 1 at the cut, its centre inside but its disc cut (it may or may
+     * not survive); 0 cut away. So the share of ground-truth vertices kept is known without the
+     * map's graph. Unset: the whole ground truth is kept. */
+    std::function<int(const Eigen::Vector2d& p_gt, double clearance_m)> kept;
 };
 }  // namespace mrpt_topoeval::validation

@@ -155,7 +155,7 @@ std::string casesCsv(const std::vector<CaseResult>& results)
     std::ostringstream o;
     o << "id,building,family,source,kind,ladder,severity,param,truth_source,truth_cells,"
          "truth_on_wall,truth_share,wall_tolerance_m,distortion_m,gt_vertices,map_vertices,gt_with_"
-         "counterpart,"
+         "counterpart,gt_kept,gt_at_cut,"
          "matched,true_pairs,precision,recall,coverage,quality,relative_rmse_m,"
          "brokenness_injected,brokenness_found,parts_with_3_pairs,parts_with_5_pairs,"
          "parts_with_5_counterparts,parts_with_3_counterparts,false_core,false_grown,"
@@ -169,11 +169,12 @@ std::string casesCsv(const std::vector<CaseResult>& results)
           << csvField(r.truth_source) << ',' << r.truth_check.cells << ',' << r.truth_check.on_wall
           << ',' << numText(r.truth_check.share()) << ',' << numText(r.wall_tolerance_m, 3) << ','
           << numText(r.distortion_m, 4) << ',' << s.gt_vertices << ',' << s.map_vertices << ','
-          << s.gt_with_counterpart << ',' << s.matched << ',' << s.true_pairs << ','
-          << numText(s.precision) << ',' << numText(s.recall) << ',' << numText(s.coverage) << ','
-          << numText(s.quality) << ',' << numText(s.relative_rmse_m) << ',' << s.brokenness_injected
-          << ',' << s.brokenness_found << ',' << s.parts_with_3_pairs << ',' << s.parts_with_5_pairs
-          << ',' << s.parts_with_5_counterparts << ',' << s.parts_with_3_counterparts << ','
+          << s.gt_with_counterpart << ',' << s.gt_kept << ',' << s.gt_at_cut << ',' << s.matched
+          << ',' << s.true_pairs << ',' << numText(s.precision) << ',' << numText(s.recall) << ','
+          << numText(s.coverage) << ',' << numText(s.quality) << ',' << numText(s.relative_rmse_m)
+          << ',' << s.brokenness_injected << ',' << s.brokenness_found << ','
+          << s.parts_with_3_pairs << ',' << s.parts_with_5_pairs << ','
+          << s.parts_with_5_counterparts << ',' << s.parts_with_3_counterparts << ','
           << s.false_core << ',' << s.false_grown << ','
           << numText(s.max_group_rotation_error_deg, 2) << ',' << csvField(r.error) << ','
           << numText(r.time_ms, 1) << '\n';
@@ -267,6 +268,8 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("gt_vertices").value(static_cast<std::uint64_t>(s.gt_vertices));
         j.key("map_vertices").value(static_cast<std::uint64_t>(s.map_vertices));
         j.key("gt_with_counterpart").value(static_cast<std::uint64_t>(s.gt_with_counterpart));
+        j.key("gt_kept").value(static_cast<std::uint64_t>(s.gt_kept));
+        j.key("gt_at_cut").value(static_cast<std::uint64_t>(s.gt_at_cut));
         j.key("matched").value(static_cast<std::uint64_t>(s.matched));
         j.key("true_pairs").value(static_cast<std::uint64_t>(s.true_pairs));
         j.key("precision").value(s.precision, 4);

@@ -540,6 +540,17 @@ Variant makeCrop(const COccupancyGridMap2D& gt, double keep_share, std::uint32_t
         }
     v.truth = identityTruth(defaultTolerance(res, res));
     v.truth.keeps_free_space = false;  // the part cut away is unknown
+    const Eigen::Vector2d lo(gt.idx2x(x0) - 0.5 * res, gt.idx2y(y0) - 0.5 * res),
+        hi(gt.idx2x(x1) + 0.5 * res, gt.idx2y(y1) + 0.5 * res);
+    v.truth.kept = [lo, hi](const Eigen::Vector2d& p, double r)
+    {
+        auto inside = [&](double m)
+        {
+            return p.x() - m >= lo.x() && p.y() - m >= lo.y() && p.x() + m <= hi.x() &&
+                   p.y() + m <= hi.y();
+        };
+        return inside(r) ? 2 : inside(0.0) ? 1 : 0;
+    };
     return v;
 }
 

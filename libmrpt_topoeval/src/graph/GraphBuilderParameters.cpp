@@ -50,6 +50,10 @@ TOPOEVAL_PARAMETER_TABLE(
          "alpha-shape radius of the outer boundary (paper: 2.5); 0 = no cut", atLeast(0)),
     flag(TOPOEVAL_KEY(alpha_keep_enclosed),
          "the cut spares free space that does not reach the map's edge (false = paper)"),
+    real(TOPOEVAL_KEY(alpha_page_max_edge_unknown), "ratio",
+         "free space at the map's edge is outside only if at most this share of the edge is "
+         "unknown (a page); 1 = always",
+         atLeast(0).atMost(1)),
     // Infinity keeps only the biggest part, as the paper does.
     real(TOPOEVAL_KEY(min_component_length_m), "m",
          "keep every connected part with at least this much edge length (and the "

@@ -251,17 +251,36 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
 }
 
 // Ours (alpha_keep_enclosed): the free cells that reach the edge of the grid region through
-// free cells (4-connected): the page around a floor plan, the open side of a cropped map. Free
-// space enclosed by walls or unknown is the map's inside, whatever the alpha polygon says.
-// 1 where a cell reaches the edge; empty when no free cell lies on the edge (a robot map,
-// unknown all around: nothing is outside, and no copy of the grid is made).
-std::vector<std::uint8_t> freeReachingEdge(const std::vector<std::uint8_t>& cls, int sx, int sy)
+// free cells (4-connected): the page around a floor plan. Free space enclosed by walls or
+// unknown is the map's inside, whatever the alpha polygon says. 1 where a cell reaches the
+// edge; empty when nothing is outside, and then no copy of the grid is made: no free cell lies
+// on the edge (a robot map, unknown all around), or more than `max_edge_unknown` of the edge's
+// cells are unknown (alpha_page_max_edge_unknown: a map that says its outside is unknown, whose
+// free space at the edge is its inside cut by the map's border, as a crop through a hall).
+std::vector<std::uint8_t> freeReachingEdge(const std::vector<std::uint8_t>& cls, int sx, int sy,
+                                           double max_edge_unknown)
 {
-    auto freeAt = [&](int x, int y) { return cls[static_cast<std::size_t>(y) * sx + x] == kFree; };
-    bool open = false;
-    for (int x = 0; x < sx && !open; ++x) open = freeAt(x, 0) || freeAt(x, sy - 1);
-    for (int y = 0; y < sy && !open; ++y) open = freeAt(0, y) || freeAt(sx - 1, y);
-    if (!open) return {};
+    std::size_t free_cells = 0, unknown_cells = 0, edge_cells = 0;
+    auto count = [&](int x, int y)
+    {
+        const std::uint8_t c = cls[static_cast<std::size_t>(y) * sx + x];
+        free_cells += c == kFree;
+        unknown_cells += c == kUnknown;
+        ++edge_cells;
+    };
+    for (int x = 0; x < sx; ++x)
+    {
+        count(x, 0);
+        if (sy > 1) count(x, sy - 1);
+    }
+    for (int y = 1; y + 1 < sy; ++y)
+    {
+        count(0, y);
+        if (sx > 1) count(sx - 1, y);
+    }
+    if (free_cells == 0 ||
+        static_cast<double>(unknown_cells) > max_edge_unknown * static_cast<double>(edge_cells))
+        return {};
     constexpr std::uint8_t kReached = 3;
     std::vector<std::uint8_t> mark(cls);
     floodFromEdge(mark, sx, sy, kFree, kReached, 4);
@@ -489,7 +508,8 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
     // None on most robot maps (unknown all around): then nothing is outside.
     const bool keep_enclosed = params.alpha_radius_m > 0.0 && params.alpha_keep_enclosed;
     const std::vector<std::uint8_t> open_free =
-        keep_enclosed ? freeReachingEdge(cls, w, h) : std::vector<std::uint8_t>();
+        keep_enclosed ? freeReachingEdge(cls, w, h, params.alpha_page_max_edge_unknown)
+                      : std::vector<std::uint8_t>();
     std::vector<std::uint8_t>().swap(cls);
     vin.min_clearance_cells = params.min_clearance_m / res;
     vin.alpha_radius_cells = params.alpha_radius_m / res;
@@ -542,7 +562,7 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
             {
                 if (internal::pointInPolygon(outer, p)) return true;
                 if (!keep_enclosed) return false;
-                if (open_free.empty()) return true;  // no free space reaches the map's edge
+                if (open_free.empty()) return true;  // nothing is outside (freeReachingEdge)
                 const long x = std::lround(p.x()) - ox, y = std::lround(p.y()) - oy;
                 if (x < 0 || y < 0 || x >= w || y >= h) return false;
                 return open_free[static_cast<std::size_t>(y) * w + x] == 0;
