@@ -195,6 +195,15 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             s.parts_with_5_counterparts += (part >= 0 && n >= 5) ? 1 : 0;
             s.parts_with_3_counterparts += (part >= 0 && n >= 3) ? 1 : 0;
         }
+        if (truth.kept_part)
+        {
+            std::map<int, int> kept_per_part;
+            for (const auto& g : gt.vertices)
+                if (!g.spurious) ++kept_per_part[truth.kept_part(g.position_m, g.clearance_m)];
+            s.parts_with_3_kept = 0;
+            for (const auto& [part, n] : kept_per_part)
+                s.parts_with_3_kept += (part >= 0 && n >= 3) ? 1 : 0;
+        }
         for (const auto& [part, n] : true_per_part)
         {
             s.parts_with_3_pairs += (part >= 0 && n >= 3) ? 1 : 0;

@@ -98,6 +98,11 @@ struct CaseScore
      * with fewer has no rigid fit that any matcher could find (two pairs fit any turn): its
      * break is not observable in the Topology Graphs; -1 when not broken. */
     int parts_with_3_counterparts = -1;
+    /** Broken maps: parts that keep at least 3 ground-truth vertices whole (Truth::kept_part:
+     * their walls all in the map, undisturbed by another part), by the truth alone; -1 when not
+     * broken. A part with 3 such vertices but fewer than 3 counterparts lost them in the map's
+     * graph, not in the map. */
+    int parts_with_3_kept = -1;
     /** Largest |yaw error| of an accepted brokenness group against the part most of its
      * vertices belong to [deg]; NaN when not a broken case or no group. */
     double max_group_rotation_error_deg = 0.0;

@@ -163,6 +163,12 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
                 ++a.broken_observable;
                 if (exact) ++a.broken_observable_exact;
             }
+            if (s.parts_with_3_kept >= s.brokenness_injected + 1)
+            {
+                ++a.broken_kept;
+                if (exact) ++a.broken_kept_exact;
+                if (!observable(s)) a.broken_kept_graph_lost.push_back(r->spec.id);
+            }
             if (std::isfinite(s.max_group_rotation_error_deg))
                 a.max_rotation_error_deg =
                     std::max(a.max_rotation_error_deg, s.max_group_rotation_error_deg);
@@ -344,11 +350,22 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
     }
     for (const auto& a : s.kinds)
         if (a.name == "broken")
+        {
             o << "\nbroken: exactly right in " << a.broken_exact << " of " << a.broken << "; in "
               << a.broken_measurable_exact << " of the " << a.broken_measurable
               << " whose every part holds 5 ground-truth vertices with a counterpart; in "
               << a.broken_observable_exact << " of the " << a.broken_observable
-              << " whose every part holds 3 (with fewer a part's break is not observable)\n";
+              << " whose every part holds 3 (with fewer a part's break is not observable)\n"
+              << "broken, by the truth alone: exactly right in " << a.broken_kept_exact
+              << " of the " << a.broken_kept
+              << " whose every part keeps 3 ground-truth vertices whole (their walls in the map, "
+                 "undisturbed by another part); "
+              << a.broken_kept_graph_lost.size()
+              << " of them with a part whose graph lost them (fewer than 3 counterparts)";
+            for (std::size_t k = 0; k < a.broken_kept_graph_lost.size(); ++k)
+                o << (k ? ", " : ": ") << a.broken_kept_graph_lost[k];
+            o << "\n";
+        }
     for (const auto& a : s.kinds)
         if (a.name == "broken" && !a.broken_causes.empty())
         {
@@ -441,6 +458,10 @@ std::vector<std::string> checkFloors(const Summary& s, const std::string& text,
             v = static_cast<double>(a->clean) / static_cast<double>(a->cases);
         else if (metric == "truth_min")
             v = a->truth_min;
+        else if (metric == "crop_within")
+            v = a->crop_kept.observable ? static_cast<double>(a->crop_kept.observable_within) /
+                                              static_cast<double>(a->crop_kept.observable)
+                                        : kNaN;
         else
             throw std::invalid_argument(file + ":" + std::to_string(line_no) +
                                         ": unknown metric '" + metric + "'");

@@ -61,6 +61,11 @@ struct Aggregate
     /** Broken cases whose every part holds 3 (the fewest a rigid fit can be checked on), and
      * of those the ones found exactly. */
     std::size_t broken_observable = 0, broken_observable_exact = 0;
+    /** Broken cases whose every part keeps 3 ground-truth vertices whole by the truth alone
+     * (CaseScore::parts_with_3_kept), of those the ones found exactly, and the ones that the
+     * counterparts call not observable (a part's vertices lost in the map's graph; their ids). */
+    std::size_t broken_kept = 0, broken_kept_exact = 0;
+    std::vector<std::string> broken_kept_graph_lost;
     double max_rotation_error_deg = 0.0;  //!< Over every group of every broken case.
     /** Broken cases not exactly right, by brokenCause(). */
     std::map<std::string, std::size_t> broken_causes;

@@ -76,5 +76,11 @@ struct Truth
      * not survive); 0 cut away. So the share of ground-truth vertices kept is known without the
      * map's graph. Unset: the whole ground truth is kept. */
     std::function<int(const Eigen::Vector2d& p_gt, double clearance_m)> kept;
+    /** Broken maps: the part that keeps a ground-truth vertex at p_gt with that clearance whole,
+     * or -1: its clearance disc lies in that part, and no other part put a wall within it where
+     * the part drew it in the map (walls win where parts overlap, so another part's wall there
+     * changes the vertex). The walls that make such a vertex are all in the map, as in the
+     * ground truth, whatever the map's graph makes of them. Unset: not a broken map. */
+    std::function<int(const Eigen::Vector2d& p_gt, double clearance_m)> kept_part;
 };
 }  // namespace mrpt_topoeval::validation

@@ -158,7 +158,8 @@ std::string casesCsv(const std::vector<CaseResult>& results)
          "counterpart,gt_kept,gt_at_cut,"
          "matched,true_pairs,precision,recall,coverage,quality,relative_rmse_m,"
          "brokenness_injected,brokenness_found,parts_with_3_pairs,parts_with_5_pairs,"
-         "parts_with_5_counterparts,parts_with_3_counterparts,false_core,false_grown,"
+         "parts_with_5_counterparts,parts_with_3_counterparts,parts_with_3_kept,false_core,"
+         "false_grown,"
          "max_group_rotation_error_deg,error,time_ms\n";
     for (const auto& r : results)
     {
@@ -175,7 +176,7 @@ std::string casesCsv(const std::vector<CaseResult>& results)
           << ',' << s.brokenness_injected << ',' << s.brokenness_found << ','
           << s.parts_with_3_pairs << ',' << s.parts_with_5_pairs << ','
           << s.parts_with_5_counterparts << ',' << s.parts_with_3_counterparts << ','
-          << s.false_core << ',' << s.false_grown << ','
+          << s.parts_with_3_kept << ',' << s.false_core << ',' << s.false_grown << ','
           << numText(s.max_group_rotation_error_deg, 2) << ',' << csvField(r.error) << ','
           << numText(r.time_ms, 1) << '\n';
     }
@@ -283,6 +284,7 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("parts_with_5_pairs").value(s.parts_with_5_pairs);
         j.key("parts_with_5_counterparts").value(s.parts_with_5_counterparts);
         j.key("parts_with_3_counterparts").value(s.parts_with_3_counterparts);
+        j.key("parts_with_3_kept").value(s.parts_with_3_kept);
         j.key("false_core").value(s.false_core);
         j.key("false_grown").value(s.false_grown);
         j.key("max_group_rotation_error_deg").value(s.max_group_rotation_error_deg, 2);

@@ -240,6 +240,41 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     if (parts.size() > 1)
     {
         auto shared_walls = std::make_shared<const std::vector<std::int8_t>>(std::move(wall_part));
+        v.truth.kept_part =
+            [shared_parts, shared_walls, idx](const Eigen::Vector2d& p_gt, double clearance_m)
+        {
+            const double r = std::max(0.0, clearance_m);
+            for (std::size_t j = 0; j < shared_parts->size(); ++j)
+            {
+                const WarpPart& part = (*shared_parts)[j];
+                // The disc in the part: its centre and 16 points of its circle (the parts are
+                // convex boxes).
+                bool inside = part.contains(p_gt);
+                for (int s = 0; s < 16 && inside; ++s)
+                {
+                    const double a = s * M_PI / 8.0;
+                    inside = part.contains(p_gt + r * Eigen::Vector2d(std::cos(a), std::sin(a)));
+                }
+                if (!inside) continue;
+                // No other part's wall within the disc where this part drew it.
+                const Eigen::Vector2d q = part.gt_to_map.apply(p_gt);
+                const int n = static_cast<int>(std::ceil(r / idx.res)) + 1;
+                const int qx = static_cast<int>(std::floor((q.x() - idx.x_min) / idx.res));
+                const int qy = static_cast<int>(std::floor((q.y() - idx.y_min) / idx.res));
+                for (int y = std::max(0, qy - n); y <= std::min(idx.size_y - 1, qy + n); ++y)
+                    for (int x = std::max(0, qx - n); x <= std::min(idx.size_x - 1, qx + n); ++x)
+                    {
+                        const int wall =
+                            (*shared_walls)[static_cast<std::size_t>(y) * idx.size_x + x];
+                        const Eigen::Vector2d centre(idx.x_min + (x + 0.5) * idx.res,
+                                                     idx.y_min + (y + 0.5) * idx.res);
+                        if (wall >= 0 && wall != static_cast<int>(j) && (centre - q).norm() <= r)
+                            return -1;
+                    }
+                return static_cast<int>(j);
+            }
+            return -1;
+        };
         v.truth.vertex_places =
             [part_of, shared_inv, shared_walls, idx](const Eigen::Vector2d& q, double clearance_m)
         {
