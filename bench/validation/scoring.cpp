@@ -134,6 +134,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     for (const auto& g : gt.vertices)
     {
         if (g.spurious) continue;
+        bool found = false;
         for (const auto& m : map.vertices)
         {
             const int by = m.spurious ? kNotTrue : trueBy(g.id, m.id);
@@ -144,8 +145,15 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                                           std::to_string(m.id) + " (part " + std::to_string(by) +
                                           ", matched to " + std::to_string(partner) + ")");
             if (truth.part_of) ++counterparts_per_part[by];
+            found = true;
             break;
         }
+        // For the pictures: a vertex whose walls a part keeps whole, that the map's graph lost.
+        if (const int part = truth.kept_part ? truth.kept_part(g.position_m, g.clearance_m) : -1;
+            !found && part >= 0)
+            s.counterpart_lines.push_back("gt " + std::to_string(g.id) + " kept whole by part " +
+                                          std::to_string(part) +
+                                          ": no counterpart in the map's graph");
     }
     std::map<int, int> true_per_part;
     for (const auto& p : report.match.pairs)

@@ -79,7 +79,9 @@ struct CaseScore
      * G" (D absent when the truth does not place M). */
     std::vector<std::string> false_pairs;
     /** One line per ground-truth vertex with a counterpart, for the pictures: "gt G -> map M
-     * (part P, matched to X)", X the map vertex the match pairs G with (-1: none). */
+     * (part P, matched to X)", X the map vertex the match pairs G with (-1: none); and one per
+     * vertex that a part keeps whole (Truth::kept_part) without a counterpart: "gt G kept whole
+     * by part P: no counterpart in the map's graph". */
     std::vector<std::string> counterpart_lines;
     /** The match's and the evaluation's messages (why nothing matched, what was refused). */
     std::vector<std::string> messages;
