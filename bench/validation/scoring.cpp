@@ -97,12 +97,18 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     CaseScore s;
     s.gt_vertices = gt.numNonSpuriousVertices();
     s.map_vertices = map.numNonSpuriousVertices();
+    // What the truth alone keeps of each ground-truth vertex: in a crop's rectangle (2 kept,
+    // 1 at the cut, 0 cut away), and the part of a broken map that keeps it whole (-1 none).
+    std::vector<int> kept_part(gt.vertices.size(), -1);
     for (const auto& g : gt.vertices)
     {
         if (g.spurious) continue;
         const int kept = truth.kept ? truth.kept(g.position_m, g.clearance_m) : 2;
         s.gt_kept += kept == 2 ? 1 : 0;
         s.gt_at_cut += kept == 1 ? 1 : 0;
+        if (truth.kept_part)
+            kept_part[static_cast<std::size_t>(g.id)] =
+                truth.kept_part(g.position_m, g.clearance_m);
     }
     // The truth places of every map vertex, once: (part, ground-truth position), the first
     // the most likely; a vertex on a broken map's seam has one per part that made it.
@@ -149,8 +155,8 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             break;
         }
         // For the pictures: a vertex whose walls a part keeps whole, that the map's graph lost.
-        if (const int part = truth.kept_part ? truth.kept_part(g.position_m, g.clearance_m) : -1;
-            !found && part >= 0)
+        const int part = kept_part[static_cast<std::size_t>(g.id)];
+        if (!found && part >= 0)
             s.counterpart_lines.push_back("gt " + std::to_string(g.id) + " kept whole by part " +
                                           std::to_string(part) +
                                           ": no counterpart in the map's graph");
@@ -206,8 +212,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
         if (truth.kept_part)
         {
             std::map<int, int> kept_per_part;
-            for (const auto& g : gt.vertices)
-                if (!g.spurious) ++kept_per_part[truth.kept_part(g.position_m, g.clearance_m)];
+            for (const int part : kept_part) ++kept_per_part[part];
             s.parts_with_3_kept = 0;
             for (const auto& [part, n] : kept_per_part)
                 s.parts_with_3_kept += (part >= 0 && n >= 3) ? 1 : 0;

@@ -112,11 +112,12 @@ std::string brokenCause(const CaseScore& s)
 void CropErrors::add(const std::string& id, double coverage, std::size_t kept, std::size_t at_cut,
                      std::size_t total)
 {
+    if (total == 0) return;  // no ground-truth vertex: no share
     ++crops;
     const double low = static_cast<double>(kept) / total,
                  high = static_cast<double>(kept + at_cut) / total;
     const double error = std::max({0.0, low - coverage, coverage - high});
-    mean += error;
+    mean += (error - mean) / static_cast<double>(crops);  // running mean
     if (max_case.empty() || error > max) max = error, max_case = id;
     if (kept + at_cut >= 3)
     {
@@ -192,7 +193,7 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
         a.mean_time_ms /= ok;
     }
     for (CropErrors* c : {&a.crop_kept, &a.crop_counterparts})
-        c->mean = c->crops ? c->mean / c->crops : kNaN;
+        if (c->crops == 0) c->mean = kNaN;
     return a;
 }
 

@@ -29,7 +29,7 @@ struct CaseResult
 struct CropErrors
 {
     std::size_t crops = 0;
-    double mean = 0.0;  //!< Mean distance of coverage to the share kept.
+    double mean = 0.0;  //!< Mean distance of coverage to the share kept (NaN: no crop).
     double max = 0.0;   //!< The largest, and its case.
     std::string max_case;
     /** Over the crops that keep at least 3 ground-truth vertices (the fewest a group holds:
@@ -39,7 +39,7 @@ struct CropErrors
     double max_observable = 0.0;
     /** Adds a crop whose coverage is `coverage`, which keeps `kept` of `total` vertices and
      * `at_cut` more that it may or may not keep: the error is the coverage's distance to the
-     * shares between kept / total and (kept + at_cut) / total. */
+     * shares between kept / total and (kept + at_cut) / total. A crop of no vertex is skipped. */
     void add(const std::string& id, double coverage, std::size_t kept, std::size_t at_cut,
              std::size_t total);
 };

@@ -42,6 +42,24 @@ struct CellIndexer
         if (cx < 0 || cy < 0 || cx >= size_x || cy >= size_y) return -1;
         return static_cast<long>(cy) * size_x + cx;
     }
+    /** Calls f(cell index) for every cell of the grid whose centre lies within `reach` of q;
+     * stops early, returning false, when f does. */
+    template <typename F>
+    bool forEachCellWithin(const Eigen::Vector2d& q, double reach, F f) const
+    {
+        const int r = static_cast<int>(std::ceil(reach / res));
+        const int qx = static_cast<int>(std::floor((q.x() - x_min) / res));
+        const int qy = static_cast<int>(std::floor((q.y() - y_min) / res));
+        for (int y = std::max(0, qy - r); y <= std::min(size_y - 1, qy + r); ++y)
+            for (int x = std::max(0, qx - r); x <= std::min(size_x - 1, qx + r); ++x)
+            {
+                const Eigen::Vector2d centre(x_min + (x + 0.5) * res, y_min + (y + 0.5) * res);
+                if ((centre - q).norm() <= reach &&
+                    !f(static_cast<std::size_t>(y) * static_cast<std::size_t>(size_x) + x))
+                    return false;
+            }
+        return true;
+    }
 };
 
 /** A clutter predicate over the cells marked in `mask` (one byte per cell of `g`). */
@@ -155,8 +173,11 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     // does): in overlaps the truth of a cell is the part that put its wall there.
     std::vector<std::int8_t> cell_part(static_cast<std::size_t>(dsx) * dsy, -1);
     // The part whose wall a cell is (-1: no wall): a topology vertex's walls name its part.
-    // Only a warp of several parts asks (vertex_places below).
+    // And every part that put a wall there, one bit each (a broken map has at most 4 parts):
+    // where parts overlap, the others' walls change a part's vertices. Only a warp of several
+    // parts asks (vertex_places and kept_part below).
     std::vector<std::int8_t> wall_part(parts.size() > 1 ? cell_part.size() : 0, -1);
+    std::vector<std::uint8_t> wall_parts(wall_part.size(), 0);
     for (int cy = 0; cy < dsy; ++cy)
         for (int cx = 0; cx < dsx; ++cx)
         {
@@ -192,6 +213,9 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
                 if (n_seen == 0) continue;
                 if (seen_part < 0) seen_part = static_cast<int>(i);
                 if (n_occ > 0 && occ_part < 0) occ_part = static_cast<int>(i);
+                if (n_occ > 0 && !wall_parts.empty() && i < 8)
+                    wall_parts[static_cast<std::size_t>(cy) * dsx + cx] |=
+                        static_cast<std::uint8_t>(1u << i);
                 if (n_occ == 0 && 2 * n_free > n_seen && free_part < 0)
                     free_part = static_cast<int>(i);
             }
@@ -240,15 +264,18 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     if (parts.size() > 1)
     {
         auto shared_walls = std::make_shared<const std::vector<std::int8_t>>(std::move(wall_part));
+        auto shared_wall_parts =
+            std::make_shared<const std::vector<std::uint8_t>>(std::move(wall_parts));
         v.truth.kept_part =
-            [shared_parts, shared_walls, idx](const Eigen::Vector2d& p_gt, double clearance_m)
+            [shared_parts, shared_wall_parts, idx](const Eigen::Vector2d& p_gt, double clearance_m)
         {
             const double r = std::max(0.0, clearance_m);
-            for (std::size_t j = 0; j < shared_parts->size(); ++j)
+            for (std::size_t j = 0; j < shared_parts->size() && j < 8; ++j)
             {
                 const WarpPart& part = (*shared_parts)[j];
                 // The disc in the part: its centre and 16 points of its circle (the parts are
-                // convex boxes).
+                // convex boxes, so this misses at most 2 % of r where a corner cuts the circle
+                // between two points). The parts are disjoint: no other part holds the disc.
                 bool inside = part.contains(p_gt);
                 for (int s = 0; s < 16 && inside; ++s)
                 {
@@ -257,21 +284,11 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
                 }
                 if (!inside) continue;
                 // No other part's wall within the disc where this part drew it.
-                const Eigen::Vector2d q = part.gt_to_map.apply(p_gt);
-                const int n = static_cast<int>(std::ceil(r / idx.res)) + 1;
-                const int qx = static_cast<int>(std::floor((q.x() - idx.x_min) / idx.res));
-                const int qy = static_cast<int>(std::floor((q.y() - idx.y_min) / idx.res));
-                for (int y = std::max(0, qy - n); y <= std::min(idx.size_y - 1, qy + n); ++y)
-                    for (int x = std::max(0, qx - n); x <= std::min(idx.size_x - 1, qx + n); ++x)
-                    {
-                        const int wall =
-                            (*shared_walls)[static_cast<std::size_t>(y) * idx.size_x + x];
-                        const Eigen::Vector2d centre(idx.x_min + (x + 0.5) * idx.res,
-                                                     idx.y_min + (y + 0.5) * idx.res);
-                        if (wall >= 0 && wall != static_cast<int>(j) && (centre - q).norm() <= r)
-                            return -1;
-                    }
-                return static_cast<int>(j);
+                const std::uint8_t others = static_cast<std::uint8_t>(~(1u << j));
+                const bool alone = idx.forEachCellWithin(
+                    part.gt_to_map.apply(p_gt), r,
+                    [&](std::size_t c) { return ((*shared_wall_parts)[c] & others) == 0; });
+                return alone ? static_cast<int>(j) : -1;
             }
             return -1;
         };
@@ -279,23 +296,19 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
             [part_of, shared_inv, shared_walls, idx](const Eigen::Vector2d& q, double clearance_m)
         {
             const double reach = std::max(0.0, clearance_m) + 1.5 * idx.res;
-            const int r = static_cast<int>(std::ceil(reach / idx.res));
-            const int qx = static_cast<int>(std::floor((q.x() - idx.x_min) / idx.res));
-            const int qy = static_cast<int>(std::floor((q.y() - idx.y_min) / idx.res));
             std::vector<int> votes(shared_inv->size(), 0);
             int total = 0;
-            for (int y = std::max(0, qy - r); y <= std::min(idx.size_y - 1, qy + r); ++y)
-                for (int x = std::max(0, qx - r); x <= std::min(idx.size_x - 1, qx + r); ++x)
-                {
-                    const auto c = static_cast<std::size_t>(y) * idx.size_x + x;
-                    const int part = (*shared_walls)[c];
-                    if (part < 0) continue;
-                    const Eigen::Vector2d centre(idx.x_min + (x + 0.5) * idx.res,
-                                                 idx.y_min + (y + 0.5) * idx.res);
-                    if ((centre - q).norm() > reach) continue;
-                    ++votes[static_cast<std::size_t>(part)];
-                    ++total;
-                }
+            idx.forEachCellWithin(q, reach,
+                                  [&](std::size_t c)
+                                  {
+                                      const int part = (*shared_walls)[c];
+                                      if (part >= 0)
+                                      {
+                                          ++votes[static_cast<std::size_t>(part)];
+                                          ++total;
+                                      }
+                                      return true;
+                                  });
             std::vector<int> order;
             for (std::size_t i = 0; i < votes.size(); ++i)
                 if (total > 0 && 4 * votes[i] >= total) order.push_back(static_cast<int>(i));

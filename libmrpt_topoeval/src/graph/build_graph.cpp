@@ -254,36 +254,45 @@ std::size_t fillEnclosedUnknown(std::vector<std::uint8_t>& cls, int sx, int sy,
 // free cells (4-connected): the page around a floor plan. Free space enclosed by walls or
 // unknown is the map's inside, whatever the alpha polygon says. 1 where a cell reaches the
 // edge; empty when nothing is outside, and then no copy of the grid is made: no free cell lies
-// on the edge (a robot map, unknown all around), or more than `max_edge_unknown` of the edge's
-// cells are unknown (alpha_page_max_edge_unknown: a map that says its outside is unknown, whose
-// free space at the edge is its inside cut by the map's border, as a crop through a hall).
-std::vector<std::uint8_t> freeReachingEdge(const std::vector<std::uint8_t>& cls, int sx, int sy,
-                                           double max_edge_unknown)
+// on the map's edge (a robot map, unknown all around), or more than `max_edge_unknown` of the
+// map's edge cells are unknown (alpha_page_max_edge_unknown: a map that says its outside is
+// unknown, whose free space at the edge is its inside cut by the map's border, as a crop
+// through a hall). The share is of the whole grid's edge, so it does not depend on the region
+// worked on: `cls` is the region (w x h cells at ox, oy) of a grid of sx x sy cells, whose
+// cells outside the region are unknown, and a free cell of the region's edge lies on the
+// grid's edge (the region's margin is unknown).
+std::vector<std::uint8_t> freeReachingEdge(const std::vector<std::uint8_t>& cls, int w, int h,
+                                           int ox, int oy, int sx, int sy, double max_edge_unknown)
 {
-    std::size_t free_cells = 0, unknown_cells = 0, edge_cells = 0;
+    std::size_t free_cells = 0, known_cells = 0;  // on the grid's edge
     auto count = [&](int x, int y)
     {
-        const std::uint8_t c = cls[static_cast<std::size_t>(y) * sx + x];
+        const int gx = ox + x, gy = oy + y;
+        if (gx != 0 && gy != 0 && gx != sx - 1 && gy != sy - 1) return;
+        const std::uint8_t c = cls[static_cast<std::size_t>(y) * w + x];
         free_cells += c == kFree;
-        unknown_cells += c == kUnknown;
-        ++edge_cells;
+        known_cells += c != kUnknown;
     };
-    for (int x = 0; x < sx; ++x)
+    for (int x = 0; x < w; ++x)
     {
         count(x, 0);
-        if (sy > 1) count(x, sy - 1);
+        if (h > 1) count(x, h - 1);
     }
-    for (int y = 1; y + 1 < sy; ++y)
+    for (int y = 1; y + 1 < h; ++y)
     {
         count(0, y);
-        if (sx > 1) count(sx - 1, y);
+        if (w > 1) count(w - 1, y);
     }
+    const std::size_t edge_cells = sx == 1 || sy == 1
+                                       ? static_cast<std::size_t>(sx) * static_cast<std::size_t>(sy)
+                                       : 2 * static_cast<std::size_t>(sx + sy) - 4;
+    const std::size_t unknown_cells = edge_cells - known_cells;
     if (free_cells == 0 ||
         static_cast<double>(unknown_cells) > max_edge_unknown * static_cast<double>(edge_cells))
         return {};
     constexpr std::uint8_t kReached = 3;
     std::vector<std::uint8_t> mark(cls);
-    floodFromEdge(mark, sx, sy, kFree, kReached, 4);
+    floodFromEdge(mark, w, h, kFree, kReached, 4);
     for (auto& m : mark) m = m == kReached;
     return mark;
 }
@@ -505,11 +514,13 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
                 vin.keep_mask[static_cast<std::size_t>(oy + y) * sx + ox + x] = at(x, y) == kFree;
     }
     // For the alpha cut (step 4): which free cells reach the region's edge, i.e. the map's.
-    // None on most robot maps (unknown all around): then nothing is outside.
+    // None on most robot maps (unknown all around) and on maps whose edge is mostly unknown:
+    // then nothing is outside.
     const bool keep_enclosed = params.alpha_radius_m > 0.0 && params.alpha_keep_enclosed;
     const std::vector<std::uint8_t> open_free =
-        keep_enclosed ? freeReachingEdge(cls, w, h, params.alpha_page_max_edge_unknown)
-                      : std::vector<std::uint8_t>();
+        keep_enclosed
+            ? freeReachingEdge(cls, w, h, ox, oy, sx, sy, params.alpha_page_max_edge_unknown)
+            : std::vector<std::uint8_t>();
     std::vector<std::uint8_t>().swap(cls);
     vin.min_clearance_cells = params.min_clearance_m / res;
     vin.alpha_radius_cells = params.alpha_radius_m / res;
