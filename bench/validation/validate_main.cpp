@@ -208,6 +208,33 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("broken").value(static_cast<std::uint64_t>(a.broken));
         j.key("broken_exact").value(static_cast<std::uint64_t>(a.broken_exact));
         j.key("max_rotation_error_deg").value(a.max_rotation_error_deg, 2);
+        j.key("broken_observable").value(static_cast<std::uint64_t>(a.broken_observable));
+        j.key("broken_observable_exact")
+            .value(static_cast<std::uint64_t>(a.broken_observable_exact));
+        j.key("broken_kept").value(static_cast<std::uint64_t>(a.broken_kept));
+        j.key("broken_kept_exact").value(static_cast<std::uint64_t>(a.broken_kept_exact));
+        j.key("broken_kept_graph_lost").beginArray();
+        for (const auto& id : a.broken_kept_graph_lost) j.value(id);
+        j.endArray();
+        // Crops: coverage against the share kept, by the crop's rectangle (the target) and by
+        // counterparts in the map's graph (before session 29).
+        auto crop = [&](const char* key, const CropErrors& c)
+        {
+            j.key(key).beginObject();
+            j.key("crops").value(static_cast<std::uint64_t>(c.crops));
+            j.key("mean_error").value(c.mean, 4);
+            j.key("max_error").value(c.max, 4);
+            j.key("max_case").value(c.max_case);
+            j.key("observable").value(static_cast<std::uint64_t>(c.observable));
+            j.key("observable_within").value(static_cast<std::uint64_t>(c.observable_within));
+            j.key("max_observable_error").value(c.max_observable, 4);
+            j.endObject();
+        };
+        if (a.crop_kept.crops)
+        {
+            crop("crop_kept", a.crop_kept);
+            crop("crop_counterparts", a.crop_counterparts);
+        }
         j.key("mean_coverage").value(a.mean_coverage, 4);
         j.key("max_coverage").value(a.max_coverage, 4);
         j.key("mean_quality").value(a.mean_quality, 4);
