@@ -1212,6 +1212,43 @@ TEST(ConsistentMatching, APartInScatteredPiecesIsFound)
     for (const auto& p : r0.match.pairs) EXPECT_NE(partOf(p.ground_truth, p.map), 1);
 }
 
+// A part whose true partners rank under the candidate lists' length (the validator's
+// multi_wing_1004/broken_2, corpus seed 1): its vertices' attributes changed at the cuts, and
+// gt 18's partner ranks 10th among the free map vertices, map 45's 7th among the free
+// ground-truth vertices. Once the other two parts are matched, the free vertices' candidate
+// lists are made longer (leftover_candidates_per_vertex) and the part is a group of its own.
+// The validator's counterparts: {gt, map, part}.
+TEST(ConsistentMatching, APartWhosePartnersRankLowIsFoundByAWiderLook)
+{
+    const auto [gt, map] = corpusCase("leftover_part", "multi_wing_1004_broken_2");
+    struct Truth
+    {
+        int gt, map, part;
+    };
+    const std::vector<Truth> truth = {
+        {0, 18, 2},  {1, 36, 1},  {3, 19, 2},  {4, 42, 1},  {5, 32, 2},  {6, 9, 2},
+        {7, 12, 2},  {10, 22, 2}, {11, 6, 2},  {12, 24, 1}, {13, 43, 1}, {15, 46, 1},
+        {16, 11, 0}, {18, 45, 1}, {19, 2, 0},  {20, 14, 0}, {21, 35, 0}, {22, 20, 0},
+        {24, 8, 0},  {25, 1, 0},  {26, 47, 1}, {27, 16, 0}, {29, 4, 0},  {30, 25, 0},
+        {31, 10, 0}, {32, 0, 0},  {33, 13, 0}, {35, 7, 0},  {36, 23, 0}, {37, 40, 0}};
+    auto partOf = [&](int g, int m)
+    {
+        for (const auto& t : truth)
+            if (t.gt == g && t.map == m) return t.part;
+        return -1;  // not a true pair
+    };
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.leftover_candidates_per_vertex = without.matcher.candidates_per_vertex;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    // Every pair true; the three parts are three brokenness groups, each of one part.
+    expectOneGroupPerPart(r, partOf, 28, {0, 1, 2});
+    for (int g : {4, 13, 15, 18, 26}) EXPECT_EQ(partOf(g, r.match.mapVertexOf(g)), 1) << g;
+    // Without the wider look: part 1 unmatched, one break missed.
+    EXPECT_EQ(r0.brokenness.degree, 1);
+    for (const auto& p : r0.match.pairs) EXPECT_NE(partOf(p.ground_truth, p.map), 1);
+}
+
 TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)
 {
     // A building cut in four (the validator's multi_wing_5003/broken_3, seed 5): its top wing

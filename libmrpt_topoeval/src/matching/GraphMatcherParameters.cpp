@@ -44,6 +44,10 @@ TOPOEVAL_PARAMETER_TABLE(
          "neighbour growing's relaxed edge-length allowance", atLeast(0)),
     integer(TOPOEVAL_KEY(candidates_per_vertex), "1",
             "consistent: most similar partners per vertex as candidates", atLeast(1)),
+    integer(TOPOEVAL_KEY(leftover_candidates_per_vertex), "1",
+            "consistent: ... per free vertex once no further group is found (at most "
+            "candidates_per_vertex: off)",
+            atLeast(0)),
     real(TOPOEVAL_KEY(min_candidate_similarity), "0..1",
          "consistent: candidate pairs are at least this similar", atLeast(0).atMost(1)),
     integer(TOPOEVAL_KEY(max_degree_difference), "1",

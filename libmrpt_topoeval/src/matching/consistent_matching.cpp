@@ -133,6 +133,9 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     int n = 0;
     std::size_t consistent_pairs = 0;  // edges of the consistency graph
     auto isFree = [&](int a, int b) { return ctx.gt_to_map[a] < 0 && ctx.map_to_gt[b] < 0; };
+    // Partners per vertex: candidates_per_vertex, then leftover_candidates_per_vertex once no
+    // further group is found (below).
+    int per_vertex = p.candidates_per_vertex;
     auto buildCandidates = [&]()
     {
         std::vector<std::uint8_t> is_cand(std::size_t(n_gt) * n_map, 0);
@@ -151,7 +154,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                     const double s = S(a, b);
                     if (s >= p.min_candidate_similarity) ranked.emplace_back(-s, j);
                 }
-                const std::size_t k = std::min<std::size_t>(ranked.size(), p.candidates_per_vertex);
+                const std::size_t k = std::min<std::size_t>(ranked.size(), per_vertex);
                 std::partial_sort(ranked.begin(), ranked.begin() + k, ranked.end());
                 for (std::size_t r = 0; r < k; ++r)
                 {
@@ -360,6 +363,16 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         for (int i : set) sum += S(cands[i].gt, cands[i].map);
         return set.empty() ? 0.0 : sum / double(set.size());
     };
+    // Significant among the current candidates by the first group's a contrario test
+    // (max_false_alarms): fewer than that many groups as big expected by chance in a
+    // consistency graph of this density.
+    auto significantAmongCandidates = [&](const std::vector<int>& group)
+    {
+        const double density =
+            n > 1 ? double(consistent_pairs) / (0.5 * double(n) * double(n - 1)) : 0.0;
+        return log10FalseAlarms(double(n), double(group.size()), density) <=
+               std::log10(p.max_false_alarms);
+    };
     // The rules a linked group must meet: extent, one rigid part, a bridge to the accepted
     // groups, similarity.
     auto acceptable = [&](const std::vector<int>& group)
@@ -369,6 +382,12 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             for (int j : group)
                 extent = std::max(extent, (pg(cands[i].gt) - pg(cands[j].gt)).norm());
         if (extent < p.min_group_extent_m) return false;
+        // In the wider look at the leftovers (leftover_candidates_per_vertex) the longer lists
+        // make chance groups likelier: there a group must be significant as a first group must
+        // be. Without it, near-twins (whose first group is a chance one) gained 47 false pairs
+        // on corpus seeds 2-16; with it 6 (doc/matching.md, "A wider look at the leftovers").
+        if (per_vertex > p.candidates_per_vertex && !significantAmongCandidates(group))
+            return false;
         // One rigid part, as the paper's brokenness groups are (its SquaredErrorThreshold): a
         // chance group keeps every pair within its own tolerance but spreads the errors to the
         // limit (two column halls of different buildings: 0 of 17 pairs true).
@@ -466,12 +485,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     auto scatteredPart = [&](const std::vector<int>& group)
     {
         if (!p.scattered_part_groups || out.cores.empty() ||
-            int(group.size()) < p.min_group_vertices)
-            return false;
-        const double density =
-            n > 1 ? double(consistent_pairs) / (0.5 * double(n) * double(n - 1)) : 0.0;
-        if (log10FalseAlarms(double(n), double(group.size()), density) >
-            std::log10(p.max_false_alarms))
+            int(group.size()) < p.min_group_vertices || !significantAmongCandidates(group))
             return false;
         const Transform2D fit = fitOf(group, nullptr);
         const Eigen::Vector2d centre = centreOf(group);
@@ -805,8 +819,18 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         std::vector<int> pool(static_cast<std::size_t>(n));
         std::iota(pool.begin(), pool.end(), 0);
         const std::vector<int> group = bestConsensus(pool);
-        if (group.empty()) break;
-        accept(group);
+        if (!group.empty())
+        {
+            accept(group);
+            continue;
+        }
+        // No further group: look once more at the vertices left free, with longer candidate
+        // lists (doc/matching.md, "A wider look at the leftovers"). A part cut off at a break
+        // changed its vertices' attributes at the cut, and their true partners rank a few
+        // places down; with the other parts matched, few vertices are left to rank.
+        if (per_vertex >= p.leftover_candidates_per_vertex) break;
+        per_vertex = p.leftover_candidates_per_vertex;
+        buildCandidates();
     }
     if (out.cores.empty()) return out;
 
