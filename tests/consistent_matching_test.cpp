@@ -1249,6 +1249,29 @@ TEST(ConsistentMatching, APartWhosePartnersRankLowIsFoundByAWiderLook)
     for (const auto& p : r0.match.pairs) EXPECT_NE(partOf(p.ground_truth, p.map), 1);
 }
 
+// The wider look at the leftovers must not make chance groups where the match is one already:
+// a near-twin (two campuses of one style, corpus seed 4's campus_4002/twin; every pair false)
+// whose chance match leaves many vertices free. Its longer candidate lists hold more chance
+// groups; the a contrario test asked of a group found there (max_false_alarms) refuses them,
+// so the match is the one made with 5 partners per free vertex. Without that test the wider
+// look added 8 false pairs here.
+TEST(ConsistentMatching, TheWiderLookAddsNoChanceGroupToANearTwin)
+{
+    const auto [gt, map] = corpusCase("twin_leftovers", "campus_4002_twin");
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.leftover_candidates_per_vertex = without.matcher.candidates_per_vertex;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    auto pairsOf = [](const QualityReport& q)
+    {
+        std::set<std::pair<int, int>> out;
+        for (const auto& p : q.match.pairs) out.insert({p.ground_truth, p.map});
+        return out;
+    };
+    EXPECT_EQ(pairsOf(r), pairsOf(r0));
+    EXPECT_EQ(r.brokenness.degree, r0.brokenness.degree);
+}
+
 TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)
 {
     // A building cut in four (the validator's multi_wing_5003/broken_3, seed 5): its top wing

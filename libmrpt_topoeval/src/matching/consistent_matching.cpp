@@ -821,13 +821,18 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         const std::vector<int> group = bestConsensus(pool);
         if (!group.empty())
         {
+            // Back to the first lists: the wider look is the last resort, asked again only
+            // when these find nothing more (a group accepted there may be the bridge another
+            // part needs).
+            per_vertex = p.candidates_per_vertex;
             accept(group);
             continue;
         }
         // No further group: look once more at the vertices left free, with longer candidate
         // lists (doc/matching.md, "A wider look at the leftovers"). A part cut off at a break
         // changed its vertices' attributes at the cut, and their true partners rank a few
-        // places down; with the other parts matched, few vertices are left to rank.
+        // places down. Ends: a wider look that finds nothing stops the search, and each one
+        // that finds a group adds one (at most max_groups).
         if (per_vertex >= p.leftover_candidates_per_vertex) break;
         per_vertex = p.leftover_candidates_per_vertex;
         buildCandidates();

@@ -71,17 +71,13 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
     /** Candidates are at least this similar [0..1]. Low: geometry, not similarity, decides;
      * similarity only keeps the consistency graph small. */
     double min_candidate_similarity = 0.1;
-    /** When no further group is found, the candidates are made once more, each free vertex
-     * with this many most similar free partners instead of candidates_per_vertex, and further
-     * groups are searched again. A part cut off at a break loses its vertices' attributes at
-     * the cut (their edges end there, their neighbours' rings change), so its true partners
-     * rank a few places down: 10th on the ground truth's side and 7th on the map's in the
-     * case that showed it (doc/matching.md, "A wider look at the leftovers"). Once the other
-     * parts are matched the free vertices are few, so the wider lists stay small; every
-     * test of a further group decides as before, and a group of this round must also be
-     * significant among the widened candidates (max_false_alarms), as longer lists make
-     * chance groups likelier. 8, 10 and 20 gave the same matches on corpus seeds 1-8. At
-     * most candidates_per_vertex: off [1]. */
+    /** When no further group is found, the candidates are made once more with this many
+     * most similar free partners per free vertex, and further groups are searched again
+     * (back to candidates_per_vertex after each group found there). A part cut off at a
+     * break changed its vertices' attributes at the cut (their edges end there), so its true
+     * partners rank a few places down. A group found with the longer lists must also be
+     * significant among them (max_false_alarms): longer lists hold more chance groups. At
+     * most candidates_per_vertex: off (doc/matching.md, "A wider look at the leftovers") [1]. */
     int leftover_candidates_per_vertex = 10;
     /** Candidate and grown pairs differ in degree by at most this: a small loop or an extra
      * dead end changes a junction's degree by one [1]. */
