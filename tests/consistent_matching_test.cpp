@@ -1102,6 +1102,24 @@ std::vector<std::set<int>> partsOfGroups(const QualityReport& r,
                          });
 }
 
+// A validator's truth list (`*.counterparts.txt`): a ground-truth vertex, its map vertex and
+// its part.
+struct TruthPair
+{
+    int gt, map, part;
+};
+
+// partOf() of a truth list: the pair's part, -1 for a pair the list does not have.
+std::function<int(int, int)> partOfTruth(std::vector<TruthPair> truth)
+{
+    return [truth = std::move(truth)](int g, int m)
+    {
+        for (const auto& t : truth)
+            if (t.gt == g && t.map == m) return t.part;
+        return -1;  // not a true pair
+    };
+}
+
 // Every pair true (partOf >= 0), at least `min_pairs`, and brokenness one group per part of
 // `parts`, each group of one part.
 void expectOneGroupPerPart(const QualityReport& r, const std::function<int(int, int)>& partOf,
@@ -1131,21 +1149,12 @@ void expectOneGroupPerPart(const QualityReport& r, const std::function<int(int, 
 TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
 {
     const auto [gt, map] = corpusCase("joined_piece", "angled_2004_broken_2");
-    struct Truth
-    {
-        int gt, map, part;
-    };
-    const std::vector<Truth> truth = {
+    const std::vector<TruthPair> truth = {
         {0, 44, 0},  {1, 34, 0},  {2, 33, 0},  {3, 29, 0},  {4, 38, 0}, {9, 31, 0},  {12, 40, 2},
         {13, 30, 2}, {14, 36, 0}, {15, 19, 2}, {18, 7, 1},  {19, 4, 1}, {20, 23, 2}, {21, 8, 1},
         {22, 1, 1},  {23, 9, 1},  {24, 26, 2}, {25, 10, 1}, {26, 5, 1}, {27, 22, 2}, {28, 2, 1},
         {29, 0, 1},  {30, 24, 2}, {31, 32, 2}, {32, 27, 2}, {34, 6, 1}, {35, 25, 2}};
-    auto partOf = [&](int g, int m)
-    {
-        for (const auto& t : truth)
-            if (t.gt == g && t.map == m) return t.part;
-        return -1;  // not a true pair
-    };
+    const auto partOf = partOfTruth(truth);
     // Session 22's part_wall_bridge finds this part another way: the join is checked alone,
     // with session 22's bridges off.
     Parameters with = Parameters{}, join_only = Parameters{};
@@ -1178,11 +1187,7 @@ TEST(ConsistentMatching, APartInScatteredPiecesIsFound)
     // (scattered_part_groups; doc/matching.md, "A part in scattered pieces"). The validator's
     // counterparts: {gt, map, part}.
     const auto [gt, map] = corpusCase("scattered_part", "column_hall_1004_broken_2");
-    struct Truth
-    {
-        int gt, map, part;
-    };
-    std::vector<Truth> truth = {
+    std::vector<TruthPair> truth = {
         {0, 5, 2},   {2, 0, 0},   {3, 1, 0},   {4, 22, 2},  {5, 44, 2},  {6, 24, 2},  {7, 13, 2},
         {9, 3, 0},   {10, 17, 0}, {11, 29, 2}, {12, 52, 2}, {13, 70, 2}, {14, 9, 0},  {15, 17, 0},
         {16, 73, 2}, {17, 64, 2}, {19, 31, 2}, {20, 16, 0}, {21, 10, 0}, {22, 8, 0},  {23, 59, 2},
@@ -1195,12 +1200,7 @@ TEST(ConsistentMatching, APartInScatteredPiecesIsFound)
     truth.push_back({14, 12, 0});
     truth.push_back({31, 47, 1});
     truth.push_back({57, 71, 1});
-    auto partOf = [&](int g, int m)
-    {
-        for (const auto& t : truth)
-            if (t.gt == g && t.map == m) return t.part;
-        return -1;  // not a true pair
-    };
+    const auto partOf = partOfTruth(truth);
     Parameters with = Parameters{}, without = Parameters{};
     without.matcher.scattered_part_groups = false;
     const QualityReport r = evaluate(gt, map, with);
@@ -1221,22 +1221,13 @@ TEST(ConsistentMatching, APartInScatteredPiecesIsFound)
 TEST(ConsistentMatching, APartWhosePartnersRankLowIsFoundByAWiderLook)
 {
     const auto [gt, map] = corpusCase("leftover_part", "multi_wing_1004_broken_2");
-    struct Truth
-    {
-        int gt, map, part;
-    };
-    const std::vector<Truth> truth = {
+    const std::vector<TruthPair> truth = {
         {0, 18, 2},  {1, 36, 1},  {3, 19, 2},  {4, 42, 1},  {5, 32, 2},  {6, 9, 2},
         {7, 12, 2},  {10, 22, 2}, {11, 6, 2},  {12, 24, 1}, {13, 43, 1}, {15, 46, 1},
         {16, 11, 0}, {18, 45, 1}, {19, 2, 0},  {20, 14, 0}, {21, 35, 0}, {22, 20, 0},
         {24, 8, 0},  {25, 1, 0},  {26, 47, 1}, {27, 16, 0}, {29, 4, 0},  {30, 25, 0},
         {31, 10, 0}, {32, 0, 0},  {33, 13, 0}, {35, 7, 0},  {36, 23, 0}, {37, 40, 0}};
-    auto partOf = [&](int g, int m)
-    {
-        for (const auto& t : truth)
-            if (t.gt == g && t.map == m) return t.part;
-        return -1;  // not a true pair
-    };
+    const auto partOf = partOfTruth(truth);
     Parameters with = Parameters{}, without = Parameters{};
     without.matcher.leftover_candidates_per_vertex = without.matcher.candidates_per_vertex;
     const QualityReport r = evaluate(gt, map, with);

@@ -11,6 +11,8 @@
 #include <numeric>
 #include <opencv2/imgproc.hpp>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 namespace mrpt_topoeval::validation
 {
@@ -172,12 +174,14 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     // The part each target cell took its value from (an obstacle's part wins, as the cell
     // does): in overlaps the truth of a cell is the part that put its wall there.
     std::vector<std::int8_t> cell_part(static_cast<std::size_t>(dsx) * dsy, -1);
-    // The part whose wall a cell is (-1: no wall): a topology vertex's walls name its part.
-    // And every part that put a wall there, one bit each (a broken map has at most 4 parts):
-    // where parts overlap, the others' walls change a part's vertices. Only a warp of several
-    // parts asks (vertex_places and kept_part below).
-    std::vector<std::int8_t> wall_part(parts.size() > 1 ? cell_part.size() : 0, -1);
-    std::vector<std::uint8_t> wall_parts(wall_part.size(), 0);
+    // Every part that put a wall in a cell, one bit each: a topology vertex's walls name its
+    // part (the lowest bit, the part whose wall the cell shows), and where parts overlap the
+    // others' walls change a part's vertices. Only a warp of several parts asks (vertex_places
+    // and kept_part below); a broken map has at most 4 parts.
+    if (parts.size() > 8)
+        throw std::invalid_argument("warpGrid: " + std::to_string(parts.size()) +
+                                    " parts, at most 8 (one bit each)");
+    std::vector<std::uint8_t> wall_parts(parts.size() > 1 ? cell_part.size() : 0, 0);
     for (int cy = 0; cy < dsy; ++cy)
         for (int cx = 0; cx < dsx; ++cx)
         {
@@ -213,7 +217,7 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
                 if (n_seen == 0) continue;
                 if (seen_part < 0) seen_part = static_cast<int>(i);
                 if (n_occ > 0 && occ_part < 0) occ_part = static_cast<int>(i);
-                if (n_occ > 0 && !wall_parts.empty() && i < 8)
+                if (n_occ > 0 && !wall_parts.empty())
                     wall_parts[static_cast<std::size_t>(cy) * dsx + cx] |=
                         static_cast<std::uint8_t>(1u << i);
                 if (n_occ == 0 && 2 * n_free > n_seen && free_part < 0)
@@ -223,9 +227,6 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
                 static_cast<std::int8_t>(occ_part >= 0    ? occ_part
                                          : free_part >= 0 ? free_part
                                                           : seen_part);
-            if (!wall_part.empty())
-                wall_part[static_cast<std::size_t>(cy) * dsx + cx] =
-                    static_cast<std::int8_t>(occ_part);
             if (occ_part >= 0)
                 v.map.setCell(cx, cy, 0.0f);
             else if (free_part >= 0)
@@ -263,14 +264,13 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
     // One part (a rigid or resampled copy): `mapping` alone.
     if (parts.size() > 1)
     {
-        auto shared_walls = std::make_shared<const std::vector<std::int8_t>>(std::move(wall_part));
         auto shared_wall_parts =
             std::make_shared<const std::vector<std::uint8_t>>(std::move(wall_parts));
         v.truth.kept_part =
             [shared_parts, shared_wall_parts, idx](const Eigen::Vector2d& p_gt, double clearance_m)
         {
             const double r = std::max(0.0, clearance_m);
-            for (std::size_t j = 0; j < shared_parts->size() && j < 8; ++j)
+            for (std::size_t j = 0; j < shared_parts->size(); ++j)
             {
                 const WarpPart& part = (*shared_parts)[j];
                 // The disc in the part: its centre and 16 points of its circle (the parts are
@@ -292,8 +292,8 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
             }
             return -1;
         };
-        v.truth.vertex_places =
-            [part_of, shared_inv, shared_walls, idx](const Eigen::Vector2d& q, double clearance_m)
+        v.truth.vertex_places = [part_of, shared_inv, shared_wall_parts, idx](
+                                    const Eigen::Vector2d& q, double clearance_m)
         {
             const double reach = std::max(0.0, clearance_m) + 1.5 * idx.res;
             std::vector<int> votes(shared_inv->size(), 0);
@@ -301,9 +301,12 @@ Variant warpGrid(const COccupancyGridMap2D& src, const std::vector<WarpPart>& pa
             idx.forEachCellWithin(q, reach,
                                   [&](std::size_t c)
                                   {
-                                      const int part = (*shared_walls)[c];
-                                      if (part >= 0)
+                                      const std::uint8_t walls = (*shared_wall_parts)[c];
+                                      if (walls != 0)
                                       {
+                                          // The part whose wall the cell shows: the first.
+                                          int part = 0;
+                                          while (!(walls & (1u << part))) ++part;
                                           ++votes[static_cast<std::size_t>(part)];
                                           ++total;
                                       }
