@@ -1120,6 +1120,14 @@ std::function<int(int, int)> partOfTruth(std::vector<TruthPair> truth)
     };
 }
 
+// How many of a match's pairs the truth puts in `part`.
+int pairsOfPart(const QualityReport& r, const std::function<int(int, int)>& partOf, int part)
+{
+    int n = 0;
+    for (const auto& p : r.match.pairs) n += partOf(p.ground_truth, p.map) == part ? 1 : 0;
+    return n;
+}
+
 // Every pair true (partOf >= 0), at least `min_pairs`, and brokenness one group per part of
 // `parts`, each group of one part.
 void expectOneGroupPerPart(const QualityReport& r, const std::function<int(int, int)>& partOf,
@@ -1155,11 +1163,12 @@ TEST(ConsistentMatching, APartInTwoLinkedPiecesIsOneGroup)
         {22, 1, 1},  {23, 9, 1},  {24, 26, 2}, {25, 10, 1}, {26, 5, 1}, {27, 22, 2}, {28, 2, 1},
         {29, 0, 1},  {30, 24, 2}, {31, 32, 2}, {32, 27, 2}, {34, 6, 1}, {35, 25, 2}};
     const auto partOf = partOfTruth(truth);
-    // Session 22's part_wall_bridge finds this part another way: the join is checked alone,
-    // with session 22's bridges off.
+    // Session 22's part_wall_bridge and session 31's scattered_part_when_piece_refused find
+    // this part other ways: the join is checked alone, with those rules off.
     Parameters with = Parameters{}, join_only = Parameters{};
     join_only.matcher.isolated_part_bridge = false;
     join_only.matcher.part_wall_bridge = false;
+    join_only.matcher.scattered_part_when_piece_refused = false;
     Parameters without = join_only;
     without.matcher.min_joined_piece_pairs = 0;
     // The groups by the paper's growth, as when the rule was made: from the match's groups
@@ -1263,6 +1272,83 @@ TEST(ConsistentMatching, TheWiderLookAddsNoChanceGroupToANearTwin)
     EXPECT_EQ(r.brokenness.degree, r0.brokenness.degree);
 }
 
+// A building cut in four (the validator's angled_15003/broken_3, held-out corpus seed 15):
+// part 3's corridor junction (map 18) lies in a piece of the map's graph of its own, the
+// corridor that joined it to the part's rooms closed at the cut. The part's 5 consistent pairs
+// are linked in pieces of 4 and 1, and what the wider look settles from them (3 pairs) is not
+// significant there. In the last look for further groups (link_across_map_pieces) pairs whose
+// map vertices lie in different pieces are linked by the ground truth alone, and part 3 is a
+// group of its own. The validator's counterparts: {gt, map, part}.
+TEST(ConsistentMatching, APartCutIntoPiecesOfTheMapsGraphIsLinkedByTheGroundTruth)
+{
+    const auto [gt, map] = corpusCase("map_pieces", "angled_15003_broken_3");
+    const std::vector<TruthPair> truth = {
+        {0, 0, 1},
+        {1, 1, 1},
+        {2, 2, 1},
+        {4, 4, 1},
+        {5, 7, 1},
+        {6, 5, 1},
+        {9, 3, 3},
+        {10, 11, 1},
+        {11, 8, 3},
+        {12, 8, 1},
+        {14, 16, 1},
+        {16, 10, 3},
+        {17, 12, 3},
+        {18, 26, 0},
+        {19, 24, 0},
+        {20, 23, 0},
+        {22, 18, 3},
+        {23, 29, 0},
+        {24, 27, 2},
+        {26, 28, 2},
+        {27, 31, 2},
+        {28, 32, 2},
+        {29, 33, 2},
+        // The validator's other true pair of the match: gt 11 and 12 merged into map 8, and
+        // its per-part truth puts map 9 within 0.5 m of gt 11 too.
+        {11, 9, 3}};
+    const auto partOf = partOfTruth(truth);
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.link_across_map_pieces = false;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    // Every pair true; the four parts are four brokenness groups, each of one part.
+    expectOneGroupPerPart(r, partOf, 20, {0, 1, 2, 3});
+    // Without the links across the map's pieces: part 3 is no group, one break missed.
+    EXPECT_EQ(r0.brokenness.degree, 2);
+    EXPECT_LE(pairsOfPart(r0, partOf, 3), 1);
+}
+
+// A part whose consistent pairs settle into linked pieces of 4, 1 and 1 pairs (the validator's
+// corridor_office_16004/broken_2, held-out corpus seed 16): the piece of 4, found in the wider
+// look at the leftovers, is refused there (4 pairs are not significant among the widened
+// candidates), while the whole 6 are (about 10^-6 chance groups as big expected). With
+// scattered_part_when_piece_refused the whole is asked as a scattered part (significant,
+// another part, its walls agree and pin it) and is the part's group. The validator's
+// counterparts: {gt, map, part}.
+TEST(ConsistentMatching, APartWhoseBiggestPieceIsRefusedIsKeptWhole)
+{
+    const auto [gt, map] = corpusCase("refused_piece", "corridor_office_16004_broken_2");
+    const std::vector<TruthPair> truth = {
+        {0, 5, 0},   {1, 1, 2},   {2, 4, 2},   {3, 10, 0},  {4, 7, 0},   {6, 8, 2},
+        {8, 9, 2},   {9, 15, 0},  {11, 13, 2}, {12, 16, 2}, {13, 14, 2}, {14, 19, 0},
+        {15, 18, 2}, {16, 27, 0}, {18, 24, 2}, {23, 32, 2}, {24, 35, 0}, {25, 32, 0},
+        {28, 29, 1}, {29, 37, 1}, {31, 28, 1}, {33, 33, 1}, {34, 20, 1}, {35, 22, 1},
+        {36, 43, 0}, {38, 30, 1}, {39, 38, 1}, {40, 25, 1}, {42, 36, 1}};
+    const auto partOf = partOfTruth(truth);
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.scattered_part_when_piece_refused = false;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    // Every pair true; the three parts are three brokenness groups, each of one part.
+    expectOneGroupPerPart(r, partOf, 27, {0, 1, 2});
+    // Without the rule: part 2 is no group, one break missed.
+    EXPECT_EQ(r0.brokenness.degree, 1);
+    EXPECT_LE(pairsOfPart(r0, partOf, 2), 1);
+}
+
 TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)
 {
     // A building cut in four (the validator's multi_wing_5003/broken_3, seed 5): its top wing
@@ -1314,6 +1400,9 @@ TEST(ConsistentMatching, APartWhoseNeighbourMovedIsFoundByItsWalls)
         {{26, 3}, 1},  {{27, 4}, 1},  {{28, 1}, 1},  {{29, 12}, 0}, {{30, 2}, 1},  {{32, 0}, 1}};
     Parameters with = Parameters{}, without = Parameters{};
     without.matcher.part_wall_bridge = false;
+    // Session 31's scattered_part_when_piece_refused also finds part 0 (the group kept whole,
+    // its biggest linked piece refused): off, to check this rule alone.
+    without.matcher.scattered_part_when_piece_refused = false;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
     for (const auto& p : r.match.pairs)

@@ -90,6 +90,12 @@ TOPOEVAL_PARAMETER_TABLE(
     flag(TOPOEVAL_KEY(scattered_part_groups),
          "consistent: a further group in pieces too small is kept whole when significant, its "
          "walls agree and it is another part"),
+    flag(TOPOEVAL_KEY(link_across_map_pieces),
+         "consistent: last, a further group's pairs in different pieces of the map's graph are "
+         "linked by the ground truth's edges alone"),
+    flag(TOPOEVAL_KEY(scattered_part_when_piece_refused),
+         "consistent: a further group whose biggest linked piece is refused is kept whole when "
+         "it is a scattered part"),
     real(TOPOEVAL_KEY(part_bridge_ratio), "ratio",
          "consistent: a further group's neighbour pairs keep their distance within this",
          atLeast(0)),
