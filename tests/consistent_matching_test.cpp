@@ -935,10 +935,17 @@ TEST(ConsistentMatching, APartlySeenSmallFlatIsMatched)
     EXPECT_GE(s.matched, 4u);
     EXPECT_EQ(s.correct, s.matched);
     EXPECT_EQ(s.correct, s.possible);
-    // Under the paper's share (0.75 of 6: 5) the graph is not small, and a group of 5 among
-    // so few candidates is not significant: nothing was matched before session 26.
+    // Under the paper's share (0.75 of 6: 5) the graph is not small, and its maximum clique
+    // is no group: nothing was matched before session 26. Session 31's look at every maximal
+    // clique (first_group_from_maximal_cliques) finds the 5 true pairs there too, with walls
+    // that agree and pin them.
     GraphMatcherParameters paper_share = tunedParameters().matcher;
     paper_share.min_small_graph_group_share = 0.75;
+    const Score ps = scoreGrids("flat_seen_200_paper_share", layout, moved,
+                                undoMove(seen, yaw, shift), &paper_share);
+    EXPECT_EQ(ps.matched, 5u);
+    EXPECT_EQ(ps.correct, 5u);
+    paper_share.first_group_from_maximal_cliques = false;
     EXPECT_EQ(scoreGrids("flat_seen_200_paper_share", layout, moved, undoMove(seen, yaw, shift),
                          &paper_share)
                   .matched,
@@ -1120,6 +1127,18 @@ std::function<int(int, int)> partOfTruth(std::vector<TruthPair> truth)
     };
 }
 
+// A corpus case's report with the default parameters, and with `turn_off` applied to the
+// matcher's (one rule off, to show what it finds).
+std::pair<QualityReport, QualityReport> withAndWithout(
+    const std::pair<mrpt::maps::COccupancyGridMap2D, mrpt::maps::COccupancyGridMap2D>& maps,
+    const std::function<void(GraphMatcherParameters&)>& turn_off)
+{
+    Parameters without;
+    turn_off(without.matcher);
+    return {evaluate(maps.first, maps.second, Parameters{}),
+            evaluate(maps.first, maps.second, without)};
+}
+
 // How many of a match's pairs the truth puts in `part`.
 int pairsOfPart(const QualityReport& r, const std::function<int(int, int)>& partOf, int part)
 {
@@ -1281,7 +1300,6 @@ TEST(ConsistentMatching, TheWiderLookAddsNoChanceGroupToANearTwin)
 // group of its own. The validator's counterparts: {gt, map, part}.
 TEST(ConsistentMatching, APartCutIntoPiecesOfTheMapsGraphIsLinkedByTheGroundTruth)
 {
-    const auto [gt, map] = corpusCase("map_pieces", "angled_15003_broken_3");
     const std::vector<TruthPair> truth = {
         {0, 0, 1},
         {1, 1, 1},
@@ -1310,10 +1328,9 @@ TEST(ConsistentMatching, APartCutIntoPiecesOfTheMapsGraphIsLinkedByTheGroundTrut
         // its per-part truth puts map 9 within 0.5 m of gt 11 too.
         {11, 9, 3}};
     const auto partOf = partOfTruth(truth);
-    Parameters with = Parameters{}, without = Parameters{};
-    without.matcher.link_across_map_pieces = false;
-    const QualityReport r = evaluate(gt, map, with);
-    const QualityReport r0 = evaluate(gt, map, without);
+    const auto [r, r0] =
+        withAndWithout(corpusCase("map_pieces", "angled_15003_broken_3"),
+                       [](GraphMatcherParameters& m) { m.link_across_map_pieces = false; });
     // Every pair true; the four parts are four brokenness groups, each of one part.
     expectOneGroupPerPart(r, partOf, 20, {0, 1, 2, 3});
     // Without the links across the map's pieces: part 3 is no group, one break missed.
@@ -1330,7 +1347,6 @@ TEST(ConsistentMatching, APartCutIntoPiecesOfTheMapsGraphIsLinkedByTheGroundTrut
 // counterparts: {gt, map, part}.
 TEST(ConsistentMatching, APartWhoseBiggestPieceIsRefusedIsKeptWhole)
 {
-    const auto [gt, map] = corpusCase("refused_piece", "corridor_office_16004_broken_2");
     const std::vector<TruthPair> truth = {
         {0, 5, 0},   {1, 1, 2},   {2, 4, 2},   {3, 10, 0},  {4, 7, 0},   {6, 8, 2},
         {8, 9, 2},   {9, 15, 0},  {11, 13, 2}, {12, 16, 2}, {13, 14, 2}, {14, 19, 0},
@@ -1338,15 +1354,39 @@ TEST(ConsistentMatching, APartWhoseBiggestPieceIsRefusedIsKeptWhole)
         {28, 29, 1}, {29, 37, 1}, {31, 28, 1}, {33, 33, 1}, {34, 20, 1}, {35, 22, 1},
         {36, 43, 0}, {38, 30, 1}, {39, 38, 1}, {40, 25, 1}, {42, 36, 1}};
     const auto partOf = partOfTruth(truth);
-    Parameters with = Parameters{}, without = Parameters{};
-    without.matcher.scattered_part_when_piece_refused = false;
-    const QualityReport r = evaluate(gt, map, with);
-    const QualityReport r0 = evaluate(gt, map, without);
+    const auto [r, r0] = withAndWithout(
+        corpusCase("refused_piece", "corridor_office_16004_broken_2"),
+        [](GraphMatcherParameters& m) { m.scattered_part_when_piece_refused = false; });
     // Every pair true; the three parts are three brokenness groups, each of one part.
     expectOneGroupPerPart(r, partOf, 27, {0, 1, 2});
     // Without the rule: part 2 is no group, one break missed.
     EXPECT_EQ(r0.brokenness.degree, 1);
     EXPECT_LE(pairsOfPart(r0, partOf, 2), 1);
+}
+
+// A building cut in four (the validator's angled_16004/broken_3, held-out corpus seed 16) whose
+// maximum clique (7 pairs: 4 of part 0, 2 of part 3, one false) mixes two parts and settles to
+// 4 pairs, too few for a first group, and whose consensus is no group: without more, its pairs
+// leave the pool and nothing is matched. With first_group_from_maximal_cliques every maximal
+// clique is settled once (44 here); the best settles to 5 pairs of part 3, its walls agree and
+// pin its fit, and it is the first group, from which the other parts follow. The validator's
+// counterparts: {gt, map, part}.
+TEST(ConsistentMatching, AFirstGroupIsFoundAmongTheMaximalCliques)
+{
+    const std::vector<TruthPair> truth = {
+        {4, 36, 3},  {5, 27, 1},  {6, 35, 3},  {7, 28, 1},  {8, 29, 1},  {9, 4, 0},
+        {10, 38, 3}, {11, 34, 3}, {12, 20, 1}, {13, 26, 1}, {14, 5, 0},  {15, 33, 3},
+        {16, 7, 0},  {17, 23, 1}, {18, 1, 0},  {19, 24, 2}, {22, 37, 3}, {23, 22, 2},
+        {24, 2, 0},  {25, 14, 2}, {26, 18, 2}, {27, 11, 2}, {28, 8, 2}};
+    const auto partOf = partOfTruth(truth);
+    const auto [r, r0] = withAndWithout(corpusCase("maximal_clique", "angled_16004_broken_3"),
+                                        [](GraphMatcherParameters& m)
+                                        { m.first_group_from_maximal_cliques = false; });
+    // Every pair true; the four parts are four brokenness groups, each of one part.
+    expectOneGroupPerPart(r, partOf, 20, {0, 1, 2, 3});
+    // Without the rule nothing is matched.
+    EXPECT_TRUE(r0.match.pairs.empty());
+    EXPECT_EQ(r0.quality, 0.0);
 }
 
 TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)

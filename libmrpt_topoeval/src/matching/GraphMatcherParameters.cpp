@@ -96,6 +96,9 @@ TOPOEVAL_PARAMETER_TABLE(
     flag(TOPOEVAL_KEY(scattered_part_when_piece_refused),
          "consistent: a further group whose biggest linked piece is refused is kept whole when "
          "it is a scattered part"),
+    flag(TOPOEVAL_KEY(first_group_from_maximal_cliques),
+         "consistent: when the maximum clique does not settle, the maximal clique that settles "
+         "best is the first group if its walls agree and pin it"),
     real(TOPOEVAL_KEY(part_bridge_ratio), "ratio",
          "consistent: a further group's neighbour pairs keep their distance within this",
          atLeast(0)),

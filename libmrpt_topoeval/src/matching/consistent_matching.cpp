@@ -681,9 +681,12 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // among 26 candidates two cliques of 4, one of them true), and which one the search
     // returns is chance; rejected, it takes the pairs it shares with the other along. So every
     // maximal clique of at least the size needed is settled, and the first group is the
-    // clique that settles to the most pairs, then the one whose walls agree best under its
-    // fit, then the most similar; `fallback` (the maximum clique) when none settles.
-    auto bestSmallGraphClique = [&](const std::vector<int>& pool, const std::vector<int>& fallback)
+    // clique that settles to the most pairs, then (`by_walls`) the one whose walls agree best
+    // under its fit, then the most similar; `fallback` (the maximum clique) when none settles.
+    // Also asked, without the walls, when a big graph's maximum clique does not settle
+    // (first_group_from_maximal_cliques, below).
+    auto bestMaximalClique =
+        [&](const std::vector<int>& pool, const std::vector<int>& fallback, bool by_walls)
     {
         std::size_t steps = 0;
         const std::vector<std::vector<int>> cliques =
@@ -695,12 +698,15 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         {
             std::vector<int> group = clique;
             if (!settle(group)) continue;
-            const std::tuple<std::size_t, double, double> key{
-                group.size(), wallsOf(group, fitOf(group, nullptr)).share, meanSimilarity(group)};
+            const double walls = by_walls ? wallsOf(group, fitOf(group, nullptr)).share : 0.0;
+            const std::tuple<std::size_t, double, double> key{group.size(), walls,
+                                                              meanSimilarity(group)};
             if (key > best_key) best_key = key, best = clique;
         }
         return best;
     };
+    // Asked once per match (first_group_from_maximal_cliques).
+    bool maximal_cliques_asked = false;
     // 3. Groups. The first: the maximum clique of the free candidates, settled; a clique that
     //    is not acceptable leaves the pool (more tries, more chance groups between different
     //    buildings). Then, while groups are found, the best acceptable consensus of the pool:
@@ -727,7 +733,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             clique = search.run(pool);
             out.clique_steps += search.steps();
             if (small_graph && int(clique.size()) >= needed())
-                clique = bestSmallGraphClique(pool, clique);
+                clique = bestMaximalClique(pool, clique, true);
         }
         if (int(clique.size()) < needed()) break;
         for (int i : clique) rejected[pairKey(cands[i])] = 1;
@@ -791,6 +797,21 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         {
             clique = bestConsensus(whole);
             ok = !clique.empty() && meanSimilarity(clique) >= p.min_small_group_similarity;
+        }
+        // A maximum clique that mixes a broken map's parts, and whose own consensus is no
+        // group, takes the parts' true pairs with it when it leaves the pool: the next
+        // maximum clique is mixed again or a chance one. So, once per match, every maximal
+        // clique of the pool is settled, and the one that settles to the most pairs (then the
+        // most similar; not chosen by its walls, which it must then pass) is the first group
+        // when its walls agree and pin its fit, as a small part's must, and it passes the
+        // first group's tests below (doc/matching.md, "A first group among the maximal
+        // cliques").
+        if (!ok && !small_graph && p.first_group_from_maximal_cliques && !maximal_cliques_asked)
+        {
+            maximal_cliques_asked = true;
+            clique = bestMaximalClique(pool, {}, false);
+            ok = !clique.empty() && settle(clique) &&
+                 agreeAndPin(wallsOf(clique, fitOf(clique, nullptr)));
         }
         if (ok)
         {

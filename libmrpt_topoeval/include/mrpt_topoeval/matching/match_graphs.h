@@ -186,6 +186,18 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * the whole is asked only when no piece is big enough (doc/matching.md, "A part in
      * scattered pieces") [bool]. */
     bool scattered_part_when_piece_refused = true;
+    /** When the maximum clique does not settle into a first group (on a broken map it often
+     * mixes the parts: near a cut's pivot their distances agree) and its own consensus is no
+     * group either, every maximal clique of the pool with at least min_group_vertices
+     * candidates is settled once per match (within max_clique_steps), and the one that settles
+     * to the most pairs, then the most similar, is the first group when its walls agree and pin
+     * its fit (min_part_wall_agreement, max_wall_pinning) and it passes the first group's
+     * tests (significance, walls, line). It is not chosen by its walls: among hundreds of
+     * cliques the best walls of a chance one reach 0.52-0.66 (held-out corpus seeds 2-16,
+     * `different` and near-twins). false: the maximum clique's pairs leave the pool and the
+     * next maximum clique is tried (doc/matching.md, "A first group among the maximal
+     * cliques") [bool]. */
+    bool first_group_from_maximal_cliques = true;
     /** A further group next to an accepted one in the ground truth (support_hops) must have a
      * bridge: one such neighbour pair whose map distance equals its ground-truth distance
      * within distance_tolerance_m + clearance share + this x the distance (a turn of up to 30
