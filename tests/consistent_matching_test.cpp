@@ -1438,11 +1438,12 @@ TEST(ConsistentMatching, APartWhoseNeighbourMovedIsFoundByItsWalls)
         {{9, 31}, 2},  {{10, 42}, 0}, {{12, 17}, 1}, {{13, 23}, 1}, {{16, 7}, 1},  {{17, 13}, 1},
         {{19, 41}, 0}, {{20, 28}, 0}, {{21, 6}, 1},  {{22, 26}, 0}, {{24, 33}, 0}, {{25, 22}, 0},
         {{26, 3}, 1},  {{27, 4}, 1},  {{28, 1}, 1},  {{29, 12}, 0}, {{30, 2}, 1},  {{32, 0}, 1}};
-    Parameters with = Parameters{}, without = Parameters{};
-    without.matcher.part_wall_bridge = false;
     // Session 31's scattered_part_when_piece_refused also finds part 0 (the group kept whole,
-    // its biggest linked piece refused): off, to check this rule alone.
-    without.matcher.scattered_part_when_piece_refused = false;
+    // its biggest linked piece refused): off in both, to check this rule alone.
+    Parameters with = Parameters{};
+    with.matcher.scattered_part_when_piece_refused = false;
+    Parameters without = with;
+    without.matcher.part_wall_bridge = false;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
     for (const auto& p : r.match.pairs)

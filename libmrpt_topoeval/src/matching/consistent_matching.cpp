@@ -70,8 +70,9 @@ std::vector<int> nearInGraph(const MatchView& view, int v, int hops)
 
 // The given pairs' components connected by links (`linked(x, y)` on two candidates: (g1, m1)
 // and (g2, m2) are linked when g2 lies within support_hops view edges of g1 and m2 within
-// support_hops of m1), the biggest first (ties: the first found), each's members in the given
-// order.
+// support_hops of m1, or, in the last look for further groups, when m1 and m2 lie in different
+// pieces of the map's graph: link_across_map_pieces), the biggest first (ties: the first
+// found), each's members in the given order.
 template <typename Linked>
 std::vector<std::vector<int>> linkedComponents(const std::vector<int>& set,
                                                const std::vector<Candidate>& cands, Linked linked)
@@ -241,19 +242,20 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // edge joins (a corridor closed at the cut, a part laid over another's rooms and cut by
     // their walls), and there the map cannot vouch for the link either way (doc/matching.md,
     // "A part cut into pieces of the map's graph").
+    // Each piece is named by its first vertex; the pieces are those of the match's view of the
+    // graph (the edges near_map walks).
     std::vector<int> map_piece(n_map, -1);
-    for (int b = 0, pieces = 0; b < n_map; ++b, ++pieces)
+    for (int b = 0; b < n_map; ++b)
     {
         if (map_piece[b] >= 0) continue;
         std::vector<int> stack{b};
-        map_piece[b] = pieces;
+        map_piece[b] = b;
         while (!stack.empty())
         {
             const int x = stack.back();
             stack.pop_back();
             for (const auto& inc : ctx.map.v[x].ring)
-                if (map_piece[inc.other] < 0)
-                    map_piece[inc.other] = pieces, stack.push_back(inc.other);
+                if (map_piece[inc.other] < 0) map_piece[inc.other] = b, stack.push_back(inc.other);
         }
     }
     bool link_across = false;
@@ -409,7 +411,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         // make chance groups likelier: there a group must be significant as a first group must
         // be. Without it, near-twins (whose first group is a chance one) gained 47 false pairs
         // on corpus seeds 2-16; with it 6 (doc/matching.md, "A wider look at the leftovers").
-        if (per_vertex > p.candidates_per_vertex && !significantAmongCandidates(group))
+        // So must a group found with the links across the map's pieces, which come after the
+        // wider look (with it off, on the first lists).
+        if ((per_vertex > p.candidates_per_vertex || link_across) &&
+            !significantAmongCandidates(group))
             return false;
         // One rigid part, as the paper's brokenness groups are (its SquaredErrorThreshold): a
         // chance group keeps every pair within its own tolerance but spreads the errors to the
@@ -527,7 +532,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
     // biggest part linked in both graphs (a further group's other linked pieces joined when
-    // they may be); then the size, extent, bridge and similarity rules.
+    // they may be, or the whole kept when it is a scattered part); then the size, extent,
+    // bridge and similarity rules.
     // Returns false (and the group as far as it got) when it is not acceptable.
     auto settle = [&](std::vector<int>& group)
     {
@@ -705,11 +711,13 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         }
         return best;
     };
-    // Asked once per match (first_group_from_maximal_cliques).
+    // Asked once per search (first_group_from_maximal_cliques), not of a rival placement given
+    // in advance (below).
     bool maximal_cliques_asked = false;
     // 3. Groups. The first: the maximum clique of the free candidates, settled; a clique that
     //    is not acceptable leaves the pool (more tries, more chance groups between different
-    //    buildings). Then, while groups are found, the best acceptable consensus of the pool:
+    //    buildings); once, the best settling maximal clique when the maximum one settles into
+    //    nothing. Then, while groups are found, the best acceptable consensus of the pool:
     //    each rigid part of a broken or bent map becomes its own group.
     for (int attempt = 0; attempt < 2 * p.max_groups && out.cores.empty(); ++attempt)
     {
@@ -800,17 +808,18 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         }
         // A maximum clique that mixes a broken map's parts, and whose own consensus is no
         // group, takes the parts' true pairs with it when it leaves the pool: the next
-        // maximum clique is mixed again or a chance one. So, once per match, every maximal
+        // maximum clique is mixed again or a chance one. So, once per search, every maximal
         // clique of the pool is settled, and the one that settles to the most pairs (then the
         // most similar; not chosen by its walls, which it must then pass) is the first group
         // when its walls agree and pin its fit, as a small part's must, and it passes the
         // first group's tests below (doc/matching.md, "A first group among the maximal
         // cliques").
-        if (!ok && !small_graph && p.first_group_from_maximal_cliques && !maximal_cliques_asked)
+        if (!ok && !small_graph && p.first_group_from_maximal_cliques && !maximal_cliques_asked &&
+            !(attempt == 0 && first))
         {
             maximal_cliques_asked = true;
             clique = bestMaximalClique(pool, {}, false);
-            ok = !clique.empty() && settle(clique) &&
+            ok = !clique.empty() && settle(clique) && p.min_part_wall_agreement > 0.0 &&
                  agreeAndPin(wallsOf(clique, fitOf(clique, nullptr)));
         }
         if (ok)

@@ -167,36 +167,39 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * such a group is refused (doc/matching.md, "A part in scattered pieces") [bool]. */
     bool scattered_part_groups = true;
     /** The last look for further groups, once no other is found even with the wider lists
-     * (leftover_candidates_per_vertex): two pairs whose map vertices lie in different pieces
-     * (connected components) of the map's graph are linked when their ground-truth vertices
-     * are (within support_hops edges). A broken map's part laid over another is cut by that
-     * part's walls and its graph falls into pieces that no edge joins; the map then cannot
-     * vouch for the link either way, and the ground truth still does. Within one piece both
-     * graphs must link the vertices, as always. Not for the first group, which decides that
-     * the maps show one place; only as the last look because, asked of every further group, it
-     * also let groups mix two parts (held-out corpus seeds 2-16: 73 true pairs more and 43
-     * false; as the last look 45 and 10). false: both graphs must always link
-     * (doc/matching.md, "A part cut into pieces of the map's graph") [bool]. */
+     * (leftover_candidates_per_vertex; with those off, on the first lists), each group found
+     * there significant as in the wider look: two pairs whose map vertices lie in different
+     * pieces (connected components) of the map's graph are linked when their ground-truth
+     * vertices are (within support_hops edges). At a break the map's graph falls into pieces
+     * that no edge joins (a corridor closed at the cut, a part laid over another's rooms and
+     * cut by their walls); there the map cannot vouch for the link either way, and the ground
+     * truth still does. Within one piece both graphs must link the vertices, as always. Not for
+     * the first group, which decides that the maps show one place; only as the last look
+     * because, asked of every further group, it also let groups mix two parts (held-out corpus
+     * seeds 2-16: 73 true pairs more and 43 false; as the last look 45 and 10). false: both
+     * graphs must always link (doc/matching.md, "A part cut into pieces of the map's graph")
+     * [bool]. */
     bool link_across_map_pieces = true;
     /** A further group whose biggest linked piece is refused (a few pairs spanning less than
      * min_group_extent_m, or without a bridge) is kept whole when the scattered part's tests
      * accept it (scattered_part_groups: as big and significant as a first group must be,
      * another part, its walls agree and pin its fit). The part's other pairs lie more than
      * support_hops edges away because the vertices between them changed at the cut. false:
-     * the whole is asked only when no piece is big enough (doc/matching.md, "A part in
-     * scattered pieces") [bool]. */
+     * the whole is asked only when no piece is big enough. Nothing with
+     * scattered_part_groups = false (doc/matching.md, "A part in scattered pieces") [bool]. */
     bool scattered_part_when_piece_refused = true;
     /** When the maximum clique does not settle into a first group (on a broken map it often
      * mixes the parts: near a cut's pivot their distances agree) and its own consensus is no
      * group either, every maximal clique of the pool with at least min_group_vertices
-     * candidates is settled once per match (within max_clique_steps), and the one that settles
-     * to the most pairs, then the most similar, is the first group when its walls agree and pin
-     * its fit (min_part_wall_agreement, max_wall_pinning) and it passes the first group's
-     * tests (significance, walls, line). It is not chosen by its walls: among hundreds of
-     * cliques the best walls of a chance one reach 0.52-0.66 (held-out corpus seeds 2-16,
-     * `different` and near-twins). false: the maximum clique's pairs leave the pool and the
-     * next maximum clique is tried (doc/matching.md, "A first group among the maximal
-     * cliques") [bool]. */
+     * candidates is settled, once per search (within max_clique_steps; not for a rival
+     * placement given in advance), and the one that settles to the most pairs, then the most
+     * similar, is the first group when its walls agree and pin its fit
+     * (min_part_wall_agreement, max_wall_pinning; never with that test off) and it passes the
+     * first group's tests (significance, walls, line). It is not chosen by its walls: among
+     * hundreds of cliques the best walls of a chance one reach 0.52-0.66 (held-out corpus
+     * seeds 2-16, `different` and near-twins). false: the maximum clique's pairs leave the
+     * pool and the next maximum clique is tried (doc/matching.md, "A first group among the
+     * maximal cliques") [bool]. */
     bool first_group_from_maximal_cliques = true;
     /** A further group next to an accepted one in the ground truth (support_hops) must have a
      * bridge: one such neighbour pair whose map distance equals its ground-truth distance
