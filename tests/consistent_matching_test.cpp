@@ -1240,6 +1240,64 @@ TEST(ConsistentMatching, APartInScatteredPiecesIsFound)
     for (const auto& p : r0.match.pairs) EXPECT_NE(partOf(p.ground_truth, p.map), 1);
 }
 
+// A corridor office cut in three (the validator's corridor_office_7003/broken_2, held-out
+// corpus seed 7): part 2's consistent pairs lie in linked pieces too small to be a group, and
+// the whole is 4 pairs (with gt 32 at the seam of parts 1 and 2). A scattered part needs
+// min_scattered_part_pairs (3) and its significance among the candidates, which decides: this
+// one is significant, another part, and its walls agree and pin its fit. With session 26's
+// floor of 5 pairs it is no group. The validator's counterparts: {gt, map, part}.
+TEST(ConsistentMatching, ASmallScatteredPartIsFoundWhenSignificant)
+{
+    const std::vector<TruthPair> truth = {{0, 2, 0},
+                                          {1, 1, 0},
+                                          {2, 0, 0},
+                                          {3, 3, 0},
+                                          {4, 5, 0},
+                                          {5, 4, 0},
+                                          {6, 6, 0},
+                                          {7, 8, 0},
+                                          {8, 11, 0},
+                                          {9, 13, 0},
+                                          {10, 7, 0},
+                                          {11, 19, 0},
+                                          {13, 16, 2},
+                                          {14, 17, 2},
+                                          {15, 27, 1},
+                                          {16, 25, 1},
+                                          {17, 26, 1},
+                                          {18, 38, 1},
+                                          {20, 31, 1},
+                                          {21, 36, 1},
+                                          {22, 32, 1},
+                                          {24, 33, 1},
+                                          {25, 35, 1},
+                                          {26, 37, 2},
+                                          {31, 42, 2},
+                                          {32, 37, 1},
+                                          {35, 49, 2},
+                                          {36, 50, 2},
+                                          // The validator's other true pair of the match: its
+                                          // per-part truth puts map 45 within 0.5 m of gt 32 too.
+                                          {32, 45, 1}};
+    const auto partOf = partOfTruth(truth);
+    const auto [r, r0] =
+        withAndWithout(corpusCase("small_scattered_part", "corridor_office_7003_broken_2"),
+                       [](GraphMatcherParameters& m) { m.min_scattered_part_pairs = 5; });
+    // Every pair true, both breaks found: three groups, part 2's holding its pairs (gt 13, 14,
+    // 36) and gt 32, a vertex at the seam of parts 1 and 2 whose pair is true too.
+    for (const auto& p : r.match.pairs)
+        EXPECT_GE(partOf(p.ground_truth, p.map), 0) << p.ground_truth << " -> " << p.map;
+    EXPECT_GE(r.match.pairs.size(), 24u);
+    EXPECT_EQ(r.brokenness.degree, 2);
+    ASSERT_EQ(r.brokenness.groups.size(), 3u);
+    std::set<int> third(r.brokenness.groups[2].gt_vertices.begin(),
+                        r.brokenness.groups[2].gt_vertices.end());
+    EXPECT_EQ(third, (std::set<int>{13, 14, 32, 36}));
+    // With 5 pairs needed: part 2 is no group, one break missed.
+    EXPECT_EQ(r0.brokenness.degree, 1);
+    EXPECT_LE(pairsOfPart(r0, partOf, 2), 1);
+}
+
 // A part whose true partners rank under the candidate lists' length (the validator's
 // multi_wing_1004/broken_2, corpus seed 1): its vertices' attributes changed at the cuts, and
 // gt 18's partner ranks 10th among the free map vertices, map 45's 7th among the free

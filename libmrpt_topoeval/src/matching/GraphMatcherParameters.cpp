@@ -90,6 +90,8 @@ TOPOEVAL_PARAMETER_TABLE(
     flag(TOPOEVAL_KEY(scattered_part_groups),
          "consistent: a further group in pieces too small is kept whole when significant, its "
          "walls agree and it is another part"),
+    integer(TOPOEVAL_KEY(min_scattered_part_pairs), "1",
+            "consistent: ... of at least this many pairs (its significance decides)", atLeast(3)),
     flag(TOPOEVAL_KEY(link_across_map_pieces),
          "consistent: last, a further group's pairs in different pieces of the map's graph are "
          "linked by the ground truth's edges alone"),

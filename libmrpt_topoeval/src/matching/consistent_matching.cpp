@@ -503,17 +503,18 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         return true;
     };
     // A further group none of whose linked pieces is big enough (a part whose vertices between
-    // its counterparts changed at the cut) is kept whole when it is as big and as significant
-    // among the candidates as a first group must be, it is another part (its fit misplaces at
-    // least half of every accepted group's pairs: scattered pairs of an accepted part are
-    // growing's to reach, and their own fit puts them a few decimetres off), it is acceptable
-    // as every group must be, and its walls agree and pin its fit (scattered_part_groups;
-    // doc/matching.md, "A part in scattered pieces"). The walls last: they cost the most (on
-    // the Intel pair four such tests, all refusing, took 6 ms when asked before the rest).
+    // its counterparts changed at the cut) is kept whole when it has min_scattered_part_pairs
+    // and is as significant among the candidates as a first group must be, it is another part (its
+    // fit misplaces at least half of every accepted group's pairs: scattered pairs of an accepted
+    // part are growing's to reach, and their own fit puts them a few decimetres off), it is
+    // acceptable as every group must be, and its walls agree and pin its fit
+    // (scattered_part_groups; doc/matching.md, "A part in scattered pieces"). The walls last: they
+    // cost the most (on the Intel pair four such tests, all refusing, took 6 ms when asked before
+    // the rest).
     auto scatteredPart = [&](const std::vector<int>& group)
     {
         if (!p.scattered_part_groups || out.cores.empty() ||
-            int(group.size()) < p.min_group_vertices || !significantAmongCandidates(group))
+            int(group.size()) < p.min_scattered_part_pairs || !significantAmongCandidates(group))
             return false;
         const Transform2D fit = fitOf(group, nullptr);
         const Eigen::Vector2d centre = centreOf(group);
