@@ -1165,6 +1165,18 @@ void expectOneGroupPerPart(const QualityReport& r, const std::function<int(int, 
     }
     EXPECT_EQ(found, parts);
 }
+
+// A rule that finds one part of a broken map: with it (`r`) every pair is true and each part
+// of `parts` is a brokenness group of its own; without it (`r0`) `part` is no group (at most one
+// pair) and the breaks found are `degree_without`.
+void expectRuleFindsPart(const QualityReport& r, const QualityReport& r0,
+                         const std::function<int(int, int)>& partOf, std::size_t min_pairs,
+                         const std::set<int>& parts, int part, int degree_without)
+{
+    expectOneGroupPerPart(r, partOf, min_pairs, parts);
+    EXPECT_EQ(r0.brokenness.degree, degree_without);
+    EXPECT_LE(pairsOfPart(r0, partOf, part), 1);
+}
 }  // namespace
 
 // A further part whose consistent pairs lie in two linked pieces of the graphs is one group
@@ -1389,11 +1401,9 @@ TEST(ConsistentMatching, APartCutIntoPiecesOfTheMapsGraphIsLinkedByTheGroundTrut
     const auto [r, r0] =
         withAndWithout(corpusCase("map_pieces", "angled_15003_broken_3"),
                        [](GraphMatcherParameters& m) { m.link_across_map_pieces = false; });
-    // Every pair true; the four parts are four brokenness groups, each of one part.
-    expectOneGroupPerPart(r, partOf, 20, {0, 1, 2, 3});
-    // Without the links across the map's pieces: part 3 is no group, one break missed.
-    EXPECT_EQ(r0.brokenness.degree, 2);
-    EXPECT_LE(pairsOfPart(r0, partOf, 3), 1);
+    // Every pair true, four groups of one part each; without the links across the map's pieces
+    // part 3 is no group, one break missed.
+    expectRuleFindsPart(r, r0, partOf, 20, {0, 1, 2, 3}, 3, 2);
 }
 
 // A part whose consistent pairs settle into linked pieces of 4, 1 and 1 pairs (the validator's
@@ -1415,11 +1425,9 @@ TEST(ConsistentMatching, APartWhoseBiggestPieceIsRefusedIsKeptWhole)
     const auto [r, r0] = withAndWithout(
         corpusCase("refused_piece", "corridor_office_16004_broken_2"),
         [](GraphMatcherParameters& m) { m.scattered_part_when_piece_refused = false; });
-    // Every pair true; the three parts are three brokenness groups, each of one part.
-    expectOneGroupPerPart(r, partOf, 27, {0, 1, 2});
-    // Without the rule: part 2 is no group, one break missed.
-    EXPECT_EQ(r0.brokenness.degree, 1);
-    EXPECT_LE(pairsOfPart(r0, partOf, 2), 1);
+    // Every pair true, three groups of one part each; without the rule part 2 is no group, one
+    // break missed.
+    expectRuleFindsPart(r, r0, partOf, 27, {0, 1, 2}, 2, 1);
 }
 
 // A building cut in four (the validator's angled_16004/broken_3, held-out corpus seed 16) whose

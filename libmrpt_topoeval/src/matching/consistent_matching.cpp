@@ -68,6 +68,29 @@ std::vector<int> nearInGraph(const MatchView& view, int v, int hops)
     return out;
 }
 
+// Each vertex's piece (connected component) of the view's graph, numbered 0, 1, ... in the order
+// of each piece's first vertex.
+std::vector<int> piecesOf(const MatchView& view)
+{
+    const int n = int(view.v.size());
+    std::vector<int> piece(n, -1);
+    for (int v0 = 0, pieces = 0; v0 < n; ++v0)
+    {
+        if (piece[v0] >= 0) continue;
+        std::vector<int> stack{v0};
+        piece[v0] = pieces;
+        while (!stack.empty())
+        {
+            const int x = stack.back();
+            stack.pop_back();
+            for (const auto& inc : view.v[x].ring)
+                if (piece[inc.other] < 0) piece[inc.other] = pieces, stack.push_back(inc.other);
+        }
+        ++pieces;
+    }
+    return piece;
+}
+
 // The given pairs' components connected by links (`linked(x, y)` on two candidates: (g1, m1)
 // and (g2, m2) are linked when g2 lies within support_hops view edges of g1 and m2 within
 // support_hops of m1, or, in the last look for further groups, when m1 and m2 lie in different
@@ -242,22 +265,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // edge joins (a corridor closed at the cut, a part laid over another's rooms and cut by
     // their walls), and there the map cannot vouch for the link either way (doc/matching.md,
     // "A part cut into pieces of the map's graph").
-    // Each piece is named by its first vertex; the pieces are those of the match's view of the
-    // graph (the edges near_map walks).
-    std::vector<int> map_piece(n_map, -1);
-    for (int b = 0; b < n_map; ++b)
-    {
-        if (map_piece[b] >= 0) continue;
-        std::vector<int> stack{b};
-        map_piece[b] = b;
-        while (!stack.empty())
-        {
-            const int x = stack.back();
-            stack.pop_back();
-            for (const auto& inc : ctx.map.v[x].ring)
-                if (map_piece[inc.other] < 0) map_piece[inc.other] = b, stack.push_back(inc.other);
-        }
-    }
+    // The pieces are those of the match's view of the graph (the edges near_map walks).
+    const std::vector<int> map_piece = piecesOf(ctx.map);
     bool link_across = false;
     auto linkedPairs = [&](const Candidate& x, const Candidate& y)
     {
@@ -329,14 +338,15 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         return alignWallsByIcp(gt, map, *gt_walls, *map_walls, {{a, b}}, p.wall_margin_m, start,
                                std::max(error, wall_tolerance));
     };
+    // The small part's wall test of a group under a fit; never passed with the test off
+    // (min_part_wall_agreement = 0).
+    auto wallsAgreeAndPin = [&](const std::vector<int>& group, const Transform2D& fit)
+    { return p.min_part_wall_agreement > 0.0 && agreeAndPin(wallsOf(group, fit)); };
     // Asked of further groups, and of a small graph's first group: a first group that decides
     // that two big maps show one place has its own tests (significance, its walls and its
     // pairs' walls), but a small graph's has only its similarity or its walls.
     auto wallsConfirm = [&](const std::vector<int>& group, const Transform2D& fit)
-    {
-        if (!(p.min_part_wall_agreement > 0.0) || (out.cores.empty() && !small_graph)) return false;
-        return agreeAndPin(wallsOf(group, fit));
-    };
+    { return (!out.cores.empty() || small_graph) && wallsAgreeAndPin(group, fit); };
     // Whether a pair's walls agree where it is, made once per pair: under the fit of the first
     // group that asks or, failing that, under an ICP of the pair's own walls from it (a drifted
     // map's pair lies a few decimetres off one rigid fit of a big group); -1 without walls
@@ -691,15 +701,16 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // clique that settles to the most pairs, then (`by_walls`) the one whose walls agree best
     // under its fit, then the most similar; `fallback` (the maximum clique) when none settles.
     // Also asked, without the walls, when a big graph's maximum clique does not settle
-    // (first_group_from_maximal_cliques, below).
-    auto bestMaximalClique =
-        [&](const std::vector<int>& pool, const std::vector<int>& fallback, bool by_walls)
+    // (first_group_from_maximal_cliques, below). Returns the clique and the group it settled
+    // to (empty for the fallback).
+    auto bestMaximalClique = [&](const std::vector<int>& pool, const std::vector<int>& fallback,
+                                 bool by_walls) -> std::pair<std::vector<int>, std::vector<int>>
     {
         std::size_t steps = 0;
         const std::vector<std::vector<int>> cliques =
             maximalCliques(adjacent, n, pool, needed(), std::size_t(p.max_clique_steps), &steps);
         out.clique_steps += steps;
-        std::vector<int> best = fallback;
+        std::vector<int> best = fallback, best_group;
         std::tuple<std::size_t, double, double> best_key{0, 0.0, 0.0};
         for (const std::vector<int>& clique : cliques)
         {
@@ -708,9 +719,9 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             const double walls = by_walls ? wallsOf(group, fitOf(group, nullptr)).share : 0.0;
             const std::tuple<std::size_t, double, double> key{group.size(), walls,
                                                               meanSimilarity(group)};
-            if (key > best_key) best_key = key, best = clique;
+            if (key > best_key) best_key = key, best = clique, best_group = std::move(group);
         }
-        return best;
+        return {best, best_group};
     };
     // Asked once per search (first_group_from_maximal_cliques), not of a rival placement given
     // in advance (below).
@@ -742,7 +753,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             clique = search.run(pool);
             out.clique_steps += search.steps();
             if (small_graph && int(clique.size()) >= needed())
-                clique = bestMaximalClique(pool, clique, true);
+                clique = bestMaximalClique(pool, clique, true).first;
         }
         if (int(clique.size()) < needed()) break;
         for (int i : clique) rejected[pairKey(cands[i])] = 1;
@@ -819,9 +830,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             !(attempt == 0 && first))
         {
             maximal_cliques_asked = true;
-            clique = bestMaximalClique(pool, {}, false);
-            ok = !clique.empty() && settle(clique) && p.min_part_wall_agreement > 0.0 &&
-                 agreeAndPin(wallsOf(clique, fitOf(clique, nullptr)));
+            clique = bestMaximalClique(pool, {}, false).second;
+            ok = !clique.empty() && wallsAgreeAndPin(clique, fitOf(clique, nullptr));
         }
         if (ok)
         {
@@ -936,25 +946,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     for (int a = 0; a < n_gt; ++a) two_gt[a] = nearInGraph(ctx.gt, a, 2);
     for (int b = 0; b < n_map; ++b) two_map[b] = nearInGraph(ctx.map, b, 2);
     // The ground truth's graph pieces, and which hold a group's core pair.
-    std::vector<int> piece_of_gt(n_gt, -1);
-    std::vector<char> piece_has_core;
-    for (int a0 = 0; a0 < n_gt; ++a0)
-    {
-        if (piece_of_gt[a0] >= 0) continue;
-        const int piece = int(piece_has_core.size());
-        piece_has_core.push_back(0);
-        std::vector<int> stack{a0};
-        piece_of_gt[a0] = piece;
-        while (!stack.empty())
-        {
-            const int x = stack.back();
-            stack.pop_back();
-            piece_has_core.back() |= group_of_gt[x] >= 0;
-            for (const auto& inc : ctx.gt.v[x].ring)
-                if (piece_of_gt[inc.other] < 0)
-                    piece_of_gt[inc.other] = piece, stack.push_back(inc.other);
-        }
-    }
+    const std::vector<int> piece_of_gt = piecesOf(ctx.gt);
+    std::vector<char> piece_has_core(n_gt, 0);
+    for (int a = 0; a < n_gt; ++a)
+        if (group_of_gt[a] >= 0) piece_has_core[piece_of_gt[a]] = 1;
     std::vector<int> all_map(static_cast<std::size_t>(n_map));
     std::iota(all_map.begin(), all_map.end(), 0);
     for (const bool geometric : {false, true, false})
