@@ -101,6 +101,10 @@ TOPOEVAL_PARAMETER_TABLE(
     flag(TOPOEVAL_KEY(first_group_from_maximal_cliques),
          "consistent: when the maximum clique does not settle, the maximal clique that settles "
          "best is the first group if its walls agree and pin it"),
+    real(TOPOEVAL_KEY(max_pair_turn_deg), "deg",
+         "consistent: a pair whose own walls turn more than this against its group's leaves it "
+         "(0: off)",
+         atLeast(0).atMost(180)),
     real(TOPOEVAL_KEY(part_bridge_ratio), "ratio",
          "consistent: a further group's neighbour pairs keep their distance within this",
          atLeast(0)),

@@ -392,6 +392,50 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (counted == 0 || double(disagree) < limit * double(counted)) return std::nullopt;
         return double(disagree) / double(counted);
     };
+    // A pair's turn by its own walls: their ICP from the fit of the first group that asks (as
+    // pairWallsAgree), when the walls agree under it; none otherwise. Made once per pair.
+    std::map<std::size_t, std::optional<double>> pair_turns;
+    auto pairTurn = [&](int i, const Transform2D& fit)
+    {
+        const auto [known, fresh] = pair_turns.emplace(pairKey(cands[i]), std::nullopt);
+        if (!fresh) return known->second;
+        const int a = cands[i].gt, b = cands[i].map;
+        const auto walls_fit = pairWallsByIcp(a, b, fit, offBy(cands[i], fit));
+        if (walls_fit && pairWallsUnder(a, b, *walls_fit, 2.0).share >= p.min_part_wall_agreement)
+            known->second = walls_fit->yaw_deg;
+        return known->second;
+    };
+    // Drops the group's pairs whose walls turn more than max_pair_turn_deg from the turn that
+    // most of its pairs' walls agree with (ties: the one they deviate from least in sum); a
+    // pair without a turn stays. True when a pair left.
+    auto dropTurnedPairs = [&](std::vector<int>& group, const Transform2D& fit)
+    {
+        if (!(p.max_pair_turn_deg > 0.0) || group.size() < 3) return false;
+        std::vector<std::pair<double, int>> turns;  // a pair's turn, the pair
+        for (int i : group)
+            if (const auto turn = pairTurn(i, fit)) turns.emplace_back(*turn, i);
+        if (turns.size() < 3) return false;
+        auto apart = [](double a, double b) { return std::abs(std::remainder(a - b, 360.0)); };
+        double centre = 0.0;
+        std::pair<std::size_t, double> best{0, 0.0};  // agreeing pairs, minus their deviations
+        for (const auto& [turn, i] : turns)
+        {
+            std::pair<std::size_t, double> key{0, 0.0};
+            for (const auto& other : turns)
+                if (const double d = apart(other.first, turn); d <= p.max_pair_turn_deg)
+                    ++key.first, key.second -= d;
+            if (key > best) best = key, centre = turn;
+        }
+        std::vector<int> kept;
+        for (int i : group)
+        {
+            const auto turn = pairTurn(i, fit);
+            if (!turn || apart(*turn, centre) <= p.max_pair_turn_deg) kept.push_back(i);
+        }
+        if (kept.size() == group.size()) return false;
+        group = std::move(kept);
+        return true;
+    };
     auto meanSimilarity = [&](const std::vector<int>& set)
     {
         double sum = 0.0;
@@ -546,7 +590,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // they may be, or the whole kept when it is a scattered part); then the size, extent,
     // bridge and similarity rules.
     // Returns false (and the group as far as it got) when it is not acceptable.
-    auto settle = [&](std::vector<int>& group)
+    auto settleOnce = [&](std::vector<int>& group)
     {
         const int need = needed();
         for (;;)
@@ -613,6 +657,20 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             return true;
         }
         return false;
+    };
+    // Then the settled group's pairs whose own walls turn away from the group's turn leave it
+    // (another part's pairs near the pivot of the turn between the two: max_pair_turn_deg),
+    // and what is left is settled again. It replaces the group when it is still a group; else
+    // the group stays as it was (a small part's pair at its cut, whose walls are half the
+    // neighbour part's, can be its only bridge; doc/matching.md, "A pair whose walls turn
+    // away").
+    auto settle = [&](std::vector<int>& group)
+    {
+        if (!settleOnce(group)) return false;
+        std::vector<int> pure = group;
+        if (dropTurnedPairs(pure, fitOf(pure, nullptr)) && settleOnce(pure))
+            group = std::move(pure);
+        return true;
     };
     // A further group (a broken map's other part): the best acceptable consensus of the pool.
     // Near a break a clique mixes two parts (within a few metres of the pivot a turn of 10-30
