@@ -130,7 +130,8 @@ std::vector<std::vector<int>> linkedComponents(const std::vector<int>& set,
 /** findConsistentGroups() from a given first clique (`first`, pairs (gt, map), tried before the
  * maximum clique) or, with none, from the maximum clique; then as below. */
 ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, MatchContext& ctx,
-                           const std::vector<std::pair<int, int>>* first)
+                           const std::vector<std::pair<int, int>>* first,
+                           std::map<std::size_t, std::optional<double>>& pair_turns)
 {
     const GraphMatcherParameters& p = ctx.params;
     const SimilarityMatrix& S = ctx.similarity;
@@ -393,8 +394,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         return double(disagree) / double(counted);
     };
     // A pair's turn by its own walls: their ICP from the fit of the first group that asks (as
-    // pairWallsAgree), when the walls agree under it; none otherwise. Made once per pair.
-    std::map<std::size_t, std::optional<double>> pair_turns;
+    // pairWallsAgree), when the walls agree under it; none otherwise. Made once per pair, for
+    // every placement played out (`pair_turns`, by pairKey()).
     auto pairTurn = [&](int i, const Transform2D& fit)
     {
         const auto [known, fresh] = pair_turns.emplace(pairKey(cands[i]), std::nullopt);
@@ -1224,7 +1225,8 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
         for (const auto& g : m.grown) sum += ctx.similarity(g.gt, g.map);
         return sum;
     };
-    ConsistentMatch best = findGroups(gt, map, ctx, nullptr);
+    std::map<std::size_t, std::optional<double>> pair_turns;
+    ConsistentMatch best = findGroups(gt, map, ctx, nullptr, pair_turns);
     double best_sum = similaritySum(best);
     const std::vector<std::vector<std::pair<int, int>>> rivals = best.rivals;
     std::size_t steps = best.clique_steps;
@@ -1233,7 +1235,7 @@ ConsistentMatch findConsistentGroups(const TopologyGraph& gt, const TopologyGrap
     {
         ctx.gt_to_map = gt_to_map;
         ctx.map_to_gt = map_to_gt;
-        ConsistentMatch other = findGroups(gt, map, ctx, &rivals[r]);
+        ConsistentMatch other = findGroups(gt, map, ctx, &rivals[r], pair_turns);
         steps += other.clique_steps;
         const double sum = similaritySum(other);
         if (sum > best_sum)
