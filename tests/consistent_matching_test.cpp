@@ -1702,4 +1702,10 @@ TEST(ConsistentMatching, AFurtherGroupWhosePairsWallsDisagreeIsRefused)
     EXPECT_EQ(r0.brokenness.degree, 2);
     EXPECT_LT(worstTurnError(r), 3.0);
     EXPECT_GT(worstTurnError(r0), 90.0);
+    // The pairs' own turns alone also refuse the half-turned placement.
+    Parameters turns_only = Parameters{};
+    turns_only.matcher.further_group_disagreeing_pair_share = 0.0;
+    const QualityReport rt = evaluate(gt, map, turns_only);
+    for (const auto& [g, m] : turned) EXPECT_NE(rt.match.mapVertexOf(g), m) << g;
+    EXPECT_LT(worstTurnError(rt), 3.0);
 }
