@@ -407,8 +407,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         return known->second;
     };
     // Drops the group's pairs whose walls turn more than max_pair_turn_deg from the turn that
-    // most of its pairs' walls agree with (ties: the one they deviate from least in sum); a
-    // pair without a turn stays. True when a pair left.
+    // most of its pairs' walls agree with (ties: the one they deviate from least in sum), and
+    // the pairs without a turn (walls that do not agree under their own ICP: a vertex on the
+    // seam of two parts has half of each's) that the fit of the agreeing pairs puts beyond
+    // their tolerance. True when a pair left.
     auto dropTurnedPairs = [&](std::vector<int>& group, const Transform2D& fit)
     {
         if (!(p.max_pair_turn_deg > 0.0) || group.size() < 3) return false;
@@ -427,11 +429,25 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                     ++key.first, key.second -= d;
             if (key > best) best = key, centre = turn;
         }
+        std::vector<int> agreeing;  // in the group's order
+        for (int i : group)
+            if (const auto turn = pairTurn(i, fit);
+                turn && apart(*turn, centre) <= p.max_pair_turn_deg)
+                agreeing.push_back(i);
+        // The agreeing pairs' fit places the pairs without a turn, when they are 3 or more.
+        std::optional<Transform2D> agreeing_fit;
+        Eigen::Vector2d agreeing_centre = Eigen::Vector2d::Zero();
+        if (agreeing.size() >= 3)
+            agreeing_fit = fitOf(agreeing, nullptr), agreeing_centre = centreOf(agreeing);
         std::vector<int> kept;
         for (int i : group)
         {
             const auto turn = pairTurn(i, fit);
-            if (!turn || apart(*turn, centre) <= p.max_pair_turn_deg) kept.push_back(i);
+            const Candidate& c = cands[i];
+            if (turn ? apart(*turn, centre) <= p.max_pair_turn_deg
+                     : !agreeing_fit || offBy(c, *agreeing_fit) <=
+                                            tolerance(c, (pg(c.gt) - agreeing_centre).norm()))
+                kept.push_back(i);
         }
         if (kept.size() == group.size()) return false;
         group = std::move(kept);

@@ -216,7 +216,9 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * (at a cut, a turn of 10-30 degrees moves the vertices next to it by a few decimetres). A
      * settled group loses such pairs and is settled again, when what is left is still a group
      * (a small part's pair at its cut may be its bridge). Only a pair whose walls agree under
-     * their own ICP (min_part_wall_agreement) has a turn; the rest stay. Measured on held-out
+     * their own ICP (min_part_wall_agreement) has a turn; a pair without one (a vertex on the
+     * seam of two parts has half of each's walls) stays when the fit of the pairs whose turns
+     * agree (3 or more) places it within its tolerance. Measured on held-out
      * corpus seeds 5, 8 and 10 (each accepted group's pairs against the generator's parts,
      * which turn at least 10 degrees apart), against the median of the group's pairs' turns:
      * of 4 195 pairs of the group's own part 2 turn more than 6 degrees from it and 1 more than
