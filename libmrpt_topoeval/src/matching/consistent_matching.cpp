@@ -354,6 +354,16 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // around both vertices. Every group the consensus proposes asks again, and the groups that
     // hold one pair place it alike, within the ICP's reach.
     std::map<std::size_t, int> pair_walls;
+    // The ICP of a pair's own walls from `fit`, when they agree under it
+    // (min_part_wall_agreement); none otherwise.
+    auto ownWallsFit = [&](int i, const Transform2D& fit) -> std::optional<Transform2D>
+    {
+        const int a = cands[i].gt, b = cands[i].map;
+        const auto walls_fit = pairWallsByIcp(a, b, fit, offBy(cands[i], fit));
+        if (walls_fit && pairWallsUnder(a, b, *walls_fit, 2.0).share >= p.min_part_wall_agreement)
+            return walls_fit;
+        return std::nullopt;
+    };
     auto pairWallsAgree = [&](int i, const Transform2D& fit)
     {
         const auto [known, fresh] = pair_walls.emplace(pairKey(cands[i]), -1);
@@ -361,13 +371,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         const int a = cands[i].gt, b = cands[i].map;
         const WallAgreement w = pairWallsUnder(a, b, fit, 2.0);
         if (!w.walls_on_both) return known->second;
-        bool agrees = w.share >= p.min_part_wall_agreement;
-        if (!agrees)
-        {
-            const auto walls_fit = pairWallsByIcp(a, b, fit, offBy(cands[i], fit));
-            agrees = walls_fit &&
-                     pairWallsUnder(a, b, *walls_fit, 2.0).share >= p.min_part_wall_agreement;
-        }
+        const bool agrees = w.share >= p.min_part_wall_agreement || ownWallsFit(i, fit).has_value();
         known->second = agrees ? 1 : 0;
         return known->second;
     };
@@ -399,11 +403,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     auto pairTurn = [&](int i, const Transform2D& fit)
     {
         const auto [known, fresh] = pair_turns.emplace(pairKey(cands[i]), std::nullopt);
-        if (!fresh) return known->second;
-        const int a = cands[i].gt, b = cands[i].map;
-        const auto walls_fit = pairWallsByIcp(a, b, fit, offBy(cands[i], fit));
-        if (walls_fit && pairWallsUnder(a, b, *walls_fit, 2.0).share >= p.min_part_wall_agreement)
-            known->second = walls_fit->yaw_deg;
+        if (fresh)
+            if (const auto walls_fit = ownWallsFit(i, fit)) known->second = walls_fit->yaw_deg;
         return known->second;
     };
     // Drops the group's pairs whose walls turn more than max_pair_turn_deg from the turn that
@@ -414,40 +415,45 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     auto dropTurnedPairs = [&](std::vector<int>& group, const Transform2D& fit)
     {
         if (!(p.max_pair_turn_deg > 0.0) || group.size() < 3) return false;
-        std::vector<std::pair<double, int>> turns;  // a pair's turn, the pair
+        std::vector<std::optional<double>> turn;  // each pair's, in the group's order
+        std::size_t measured = 0;
         for (int i : group)
-            if (const auto turn = pairTurn(i, fit)) turns.emplace_back(*turn, i);
-        if (turns.size() < 3) return false;
+        {
+            turn.push_back(pairTurn(i, fit));
+            if (turn.back()) ++measured;
+        }
+        if (measured < 3) return false;
         auto apart = [](double a, double b) { return std::abs(std::remainder(a - b, 360.0)); };
         double centre = 0.0;
         std::pair<std::size_t, double> best{0, 0.0};  // agreeing pairs, minus their deviations
-        for (const auto& [turn, i] : turns)
+        for (const auto& t : turn)
         {
+            if (!t) continue;
             std::pair<std::size_t, double> key{0, 0.0};
-            for (const auto& other : turns)
-                if (const double d = apart(other.first, turn); d <= p.max_pair_turn_deg)
-                    ++key.first, key.second -= d;
-            if (key > best) best = key, centre = turn;
+            for (const auto& other : turn)
+                if (other)
+                    if (const double d = apart(*other, *t); d <= p.max_pair_turn_deg)
+                        ++key.first, key.second -= d;
+            if (key > best) best = key, centre = *t;
         }
+        auto agrees = [&](std::size_t k)
+        { return turn[k] && apart(*turn[k], centre) <= p.max_pair_turn_deg; };
         std::vector<int> agreeing;  // in the group's order
-        for (int i : group)
-            if (const auto turn = pairTurn(i, fit);
-                turn && apart(*turn, centre) <= p.max_pair_turn_deg)
-                agreeing.push_back(i);
+        for (std::size_t k = 0; k < group.size(); ++k)
+            if (agrees(k)) agreeing.push_back(group[k]);
         // The agreeing pairs' fit places the pairs without a turn, when they are 3 or more.
         std::optional<Transform2D> agreeing_fit;
         Eigen::Vector2d agreeing_centre = Eigen::Vector2d::Zero();
         if (agreeing.size() >= 3)
             agreeing_fit = fitOf(agreeing, nullptr), agreeing_centre = centreOf(agreeing);
         std::vector<int> kept;
-        for (int i : group)
+        for (std::size_t k = 0; k < group.size(); ++k)
         {
-            const auto turn = pairTurn(i, fit);
-            const Candidate& c = cands[i];
-            if (turn ? apart(*turn, centre) <= p.max_pair_turn_deg
-                     : !agreeing_fit || offBy(c, *agreeing_fit) <=
-                                            tolerance(c, (pg(c.gt) - agreeing_centre).norm()))
-                kept.push_back(i);
+            const Candidate& c = cands[group[k]];
+            if (turn[k] ? agrees(k)
+                        : !agreeing_fit || offBy(c, *agreeing_fit) <=
+                                               tolerance(c, (pg(c.gt) - agreeing_centre).norm()))
+                kept.push_back(group[k]);
         }
         if (kept.size() == group.size()) return false;
         group = std::move(kept);
