@@ -1299,9 +1299,15 @@ TEST(ConsistentMatching, ASmallScatteredPartIsFoundWhenSignificant)
                                           // per-part truth puts map 45 within 0.5 m of gt 32 too.
                                           {32, 45, 1}};
     const auto partOf = partOfTruth(truth);
-    const auto [r, r0] =
-        withAndWithout(corpusCase("small_scattered_part", "corridor_office_7003_broken_2"),
-                       [](GraphMatcherParameters& m) { m.min_scattered_part_pairs = 5; });
+    // min_unlinked_part_wall_agreement also finds part 2 (pairs whose walls agree under their fit):
+    // off in both, to check this rule alone.
+    const auto [gt, map] = corpusCase("small_scattered_part", "corridor_office_7003_broken_2");
+    Parameters with = Parameters{};
+    with.matcher.min_unlinked_part_wall_agreement = 0.0;
+    Parameters without = with;
+    without.matcher.min_scattered_part_pairs = 5;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
     // Every pair true, both breaks found: three groups, part 2's holding its pairs (gt 13, 14,
     // 36) and gt 32, a vertex at the seam of parts 1 and 2 whose pair is true too.
     for (const auto& p : r.match.pairs)
@@ -1333,7 +1339,11 @@ TEST(ConsistentMatching, APartWhosePartnersRankLowIsFoundByAWiderLook)
         {24, 8, 0},  {25, 1, 0},  {26, 47, 1}, {27, 16, 0}, {29, 4, 0},  {30, 25, 0},
         {31, 10, 0}, {32, 0, 0},  {33, 13, 0}, {35, 7, 0},  {36, 23, 0}, {37, 40, 0}};
     const auto partOf = partOfTruth(truth);
-    Parameters with = Parameters{}, without = Parameters{};
+    // min_unlinked_part_wall_agreement also finds part 1 (in the first look: its pairs' walls
+    // agree): off in both, to check the wider look alone.
+    Parameters with = Parameters{};
+    with.matcher.min_unlinked_part_wall_agreement = 0.0;
+    Parameters without = with;
     without.matcher.leftover_candidates_per_vertex = without.matcher.candidates_per_vertex;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
@@ -1503,6 +1513,32 @@ TEST(ConsistentMatching, APairWhoseWallsTurnAwayLeavesItsGroup)
     EXPECT_EQ(r0.brokenness.degree, 2);
 }
 
+// A small part whose pairs the links do not join (min_unlinked_part_wall_agreement): held-out
+// corpus seed 9's multi_wing_9001/broken_2, a building of wings cut in three (the maps in
+// tests/data/unlinked_part). Part 1 keeps three vertices with a counterpart: a dead end of the
+// top-left room (gt 8) and two vertices of the top wing (gt 15, 22). Its three pairs are
+// consistent and the walls around them agree under their fit on more than 0.9 of their length,
+// but gt 8 lies more than support_hops edges from the other two, so the biggest linked piece
+// holds two pairs, and the three are not significant enough to be kept whole as a scattered
+// part.
+// The validator's counterparts: {gt, map, part}.
+TEST(ConsistentMatching, ASmallPartWhosePairsTheLinksDoNotJoinIsFound)
+{
+    const std::vector<TruthPair> truth = {
+        {0, 9, 2},  {1, 5, 2},   {2, 19, 2},  {3, 0, 2},   {4, 3, 2},   {5, 7, 2},
+        {6, 18, 2}, {7, 1, 2},   {8, 29, 1},  {9, 2, 2},   {10, 7, 2},  {12, 14, 2},
+        {14, 6, 2}, {15, 32, 1}, {18, 10, 0}, {20, 12, 0}, {22, 33, 1}, {23, 25, 0},
+        {24, 8, 0}, {25, 28, 0}, {29, 21, 0}, {30, 16, 0}, {31, 22, 0}, {32, 27, 0}};
+    const auto partOf = partOfTruth(truth);
+    const auto [r, r0] =
+        withAndWithout(corpusCase("unlinked_part", "multi_wing_9001_broken_2"),
+                       [](GraphMatcherParameters& m) { m.min_unlinked_part_wall_agreement = 0; });
+    // Every pair true and both breaks found: three groups, each of one part, part 1's of its
+    // three pairs. Without the rule part 1 is no group and one break is missed.
+    expectRuleFindsPart(r, r0, partOf, 21, {0, 1, 2}, 1, 1);
+    EXPECT_EQ(pairsOfPart(r, partOf, 1), 3);
+}
+
 TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)
 {
     // A building cut in four (the validator's multi_wing_5003/broken_3, seed 5): its top wing
@@ -1553,9 +1589,11 @@ TEST(ConsistentMatching, APartWhoseNeighbourMovedIsFoundByItsWalls)
         {{19, 41}, 0}, {{20, 28}, 0}, {{21, 6}, 1},  {{22, 26}, 0}, {{24, 33}, 0}, {{25, 22}, 0},
         {{26, 3}, 1},  {{27, 4}, 1},  {{28, 1}, 1},  {{29, 12}, 0}, {{30, 2}, 1},  {{32, 0}, 1}};
     // Session 31's scattered_part_when_piece_refused also finds part 0 (the group kept whole,
-    // its biggest linked piece refused): off in both, to check this rule alone.
+    // its biggest linked piece refused), and so does session 33's
+    // min_unlinked_part_wall_agreement: off in both, to check this rule alone.
     Parameters with = Parameters{};
     with.matcher.scattered_part_when_piece_refused = false;
+    with.matcher.min_unlinked_part_wall_agreement = 0.0;
     Parameters without = with;
     without.matcher.part_wall_bridge = false;
     const QualityReport r = evaluate(gt, map, with);

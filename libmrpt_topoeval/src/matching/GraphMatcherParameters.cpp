@@ -105,6 +105,10 @@ TOPOEVAL_PARAMETER_TABLE(
          "consistent: a pair whose own walls turn more than this against its group's leaves it "
          "(0: off)",
          atLeast(0).atMost(180)),
+    real(TOPOEVAL_KEY(min_unlinked_part_wall_agreement), "ratio",
+         "consistent: a small further group whose links leave no piece big enough is kept whole "
+         "when its walls agree on this share and pin it (0: off)",
+         atLeast(0).atMost(1)),
     real(TOPOEVAL_KEY(part_bridge_ratio), "ratio",
          "consistent: a further group's neighbour pairs keep their distance within this",
          atLeast(0)),

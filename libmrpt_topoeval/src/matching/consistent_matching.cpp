@@ -316,13 +316,15 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // is 0 where either map has no walls.
     auto agreeAndPin = [&](const WallAgreement& w)
     { return w.share >= p.min_part_wall_agreement && w.pinning <= p.max_wall_pinning; };
-    auto wallsOf = [&](const std::vector<int>& group, const Transform2D& fit)
+    // (pinning measured only when the share is at least pinning_from_share).
+    auto wallsOf =
+        [&](const std::vector<int>& group, const Transform2D& fit, double pinning_from_share = 0.0)
     {
         indexWalls();
         std::vector<std::pair<int, int>> pairs;
         for (int i : group) pairs.emplace_back(cands[i].gt, cands[i].map);
         return wallAgreement(gt, map, *gt_walls, *map_walls, pairs, fit, p.wall_margin_m,
-                             wall_tolerance);
+                             wall_tolerance, pinning_from_share);
     };
     // One pair's walls: their agreement under a transform (pinning asked when
     // pinning_from_share <= 1), and their ICP alignment from a transform, reaching as far as
@@ -607,12 +609,35 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         }
         return acceptable(group) && wallsConfirm(group, fit);
     };
+    // A small further group whose links leave no piece big enough (a part of 3 or 4 pairs
+    // whose vertices between them changed at the cut, or lie farther apart than support_hops
+    // edges) is kept whole when its walls agree on min_unlinked_part_wall_agreement of their
+    // length and pin its fit, and it is acceptable as every small group must be (a bridge,
+    // similarity or walls). The wider look and the links across the map's pieces ask a group
+    // to be significant, which 3 or 4 pairs seldom are (doc/matching.md, "A small part whose
+    // pairs the links do not join").
+    auto unlinkedSmallPart = [&](const std::vector<int>& group)
+    {
+        if (!(p.min_unlinked_part_wall_agreement > 0.0) || out.cores.empty() ||
+            int(group.size()) < needed() || int(group.size()) >= min_size)
+            return false;
+        // Where acceptable() asks for significance (the wider look, the links across the map's
+        // pieces), asked first: it is cheap, and the walls' share is not (on the Intel pair 271
+        // groups asked it, 232 of them there, for 20 ms). The pinning only when the share passes.
+        if ((per_vertex > p.candidates_per_vertex || link_across) &&
+            !significantAmongCandidates(group))
+            return false;
+        const WallAgreement w =
+            wallsOf(group, fitOf(group, nullptr), p.min_unlinked_part_wall_agreement);
+        return w.share >= p.min_unlinked_part_wall_agreement && w.pinning <= p.max_wall_pinning &&
+               acceptable(group);
+    };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
     // that drops the worst pair while any lies farther from its place than its tolerance; the
     // biggest part linked in both graphs (a further group's other linked pieces joined when
-    // they may be, or the whole kept when it is a scattered part); then the size, extent,
-    // bridge and similarity rules.
-    // Returns false (and the group as far as it got) when it is not acceptable.
+    // they may be, or the whole kept when it is a scattered or an unlinked small part); then the
+    // size, extent, bridge and similarity rules. Returns false (and the group as far as it got)
+    // when it is not acceptable.
     auto settleOnce = [&](std::vector<int>& group)
     {
         const int need = needed();
@@ -638,9 +663,11 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         // join it when its own fit places them and the walls vouch for the whole
         // (min_joined_piece_pairs). A further group no piece of which is big enough, or whose
         // biggest piece is refused (scattered_part_when_piece_refused), stays whole when
-        // scatteredPart() finds it a part.
+        // scatteredPart() finds it a part; a small one no piece of which is big enough, when
+        // unlinkedSmallPart() does.
         const std::vector<std::vector<int>> pieces = linkedComponents(group, cands, linkedPairs);
-        if ((pieces.empty() || int(pieces.front().size()) < need) && scatteredPart(group))
+        if ((pieces.empty() || int(pieces.front().size()) < need) &&
+            (scatteredPart(group) || unlinkedSmallPart(group)))
             return true;
         const std::vector<int> whole = group;
         group = pieces.empty() ? std::vector<int>{} : pieces.front();
