@@ -1539,6 +1539,72 @@ TEST(ConsistentMatching, ASmallPartWhosePairsTheLinksDoNotJoinIsFound)
     EXPECT_EQ(pairsOfPart(r, partOf, 1), 3);
 }
 
+// A further group is trimmed to one rigid part (trim_further_groups_to_rigid): held-out corpus
+// seed 11's column_hall_11004/broken_2, a building of column halls cut in three (the maps in
+// tests/data/rigid_trim). Part 1's consensus holds 6 true pairs, each within its tolerance,
+// but their fit's mean squared error is over max_group_squared_error_m2: the hall's vertices
+// slide along the medial axis between the maps. Refused whole, part 1 is no group; trimmed of
+// its worst-placed pair, it is. The validator's counterparts: {gt, map, part}.
+TEST(ConsistentMatching, AFurtherGroupIsTrimmedToOneRigidPart)
+{
+    const std::vector<TruthPair> truth = {
+        {0, 1, 2},
+        {2, 8, 2},
+        {3, 7, 0},
+        {4, 8, 0},
+        {5, 11, 2},
+        {6, 10, 0},
+        {8, 11, 2},
+        {9, 12, 2},
+        {10, 20, 2},
+        {11, 14, 2},
+        {12, 16, 0},
+        {13, 20, 0},
+        {14, 15, 0},
+        {15, 19, 0},
+        {16, 22, 0},
+        {17, 24, 2},
+        {18, 23, 0},
+        {19, 25, 0},
+        {20, 27, 0},
+        {21, 32, 2},
+        {22, 30, 0},
+        {23, 36, 0},
+        {24, 33, 2},
+        {26, 39, 2},
+        {27, 37, 0},
+        {30, 39, 2},
+        {31, 40, 1},
+        {32, 38, 0},
+        {33, 43, 0},
+        {34, 41, 0},
+        {36, 39, 1},
+        {37, 47, 1},
+        {38, 49, 0},
+        {40, 50, 0},
+        {41, 51, 0},
+        {42, 48, 1},
+        {43, 52, 1},
+        {44, 56, 1},
+        {45, 58, 1},
+        {46, 53, 0},
+        {47, 54, 0},
+        {48, 57, 0},
+        // The validator's other true pairs of the match, in the west hall where the map's
+        // vertices lie close together: its per-part truth puts each within tolerance too.
+        {8, 12, 2},
+        {9, 14, 2},
+        {11, 18, 2}};
+    const auto partOf = partOfTruth(truth);
+    const auto [r, r0] =
+        withAndWithout(corpusCase("rigid_trim", "column_hall_11004_broken_2"),
+                       [](GraphMatcherParameters& m) { m.trim_further_groups_to_rigid = false; });
+    // Every pair true and both breaks found: three groups, each of one part. Without the trim
+    // part 1 is no group and one break is missed.
+    expectRuleFindsPart(r, r0, partOf, 29, {0, 1, 2}, 1, 1);
+    EXPECT_GE(pairsOfPart(r, partOf, 1), 5);
+}
+
 TEST(ConsistentMatching, APartThatTouchesNoMatchedPartIsFound)
 {
     // A building cut in four (the validator's multi_wing_5003/broken_3, seed 5): its top wing

@@ -72,6 +72,9 @@ TOPOEVAL_PARAMETER_TABLE(
          "consistent: a group spans at least this in the ground truth", atLeast(0)),
     real(TOPOEVAL_KEY(max_group_squared_error_m2), "m^2",
          "consistent: a group's rigid fit has at most this mean squared error", above(0)),
+    flag(TOPOEVAL_KEY(trim_further_groups_to_rigid),
+         "consistent: a further group over that error loses its worst-placed pair until it is "
+         "not"),
     integer(TOPOEVAL_KEY(max_groups), "1", "consistent: most groups (rigid parts)", atLeast(1)),
     integer(TOPOEVAL_KEY(max_clique_steps), "1",
             "consistent: branch-and-bound steps per clique search", atLeast(1)),

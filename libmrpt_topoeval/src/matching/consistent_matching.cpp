@@ -644,7 +644,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         for (;;)
         {
             if (int(group.size()) < need) return false;
-            const Transform2D T = fitOf(group, nullptr);
+            double mse = 0.0;
+            const Transform2D T = fitOf(group, &mse);
             const Eigen::Vector2d centre = centreOf(group);
             int worst = -1;
             double worst_excess = 0.0;
@@ -653,6 +654,21 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 const Candidate& c = cands[group[k]];
                 const double excess = offBy(c, T) - tolerance(c, (pg(c.gt) - centre).norm());
                 if (excess > worst_excess) worst_excess = excess, worst = int(k);
+            }
+            // Every pair within its tolerance, but the fit not one rigid part: a further
+            // group loses the pair placed worst against its tolerance (a hall's vertex that
+            // slid along the medial axis; trim_further_groups_to_rigid). A first group is
+            // refused whole by acceptable() instead.
+            if (worst < 0 && p.trim_further_groups_to_rigid && !out.cores.empty() &&
+                mse > p.max_group_squared_error_m2 && int(group.size()) > need)
+            {
+                double worst_ratio = -1.0;
+                for (std::size_t k = 0; k < group.size(); ++k)
+                {
+                    const Candidate& c = cands[group[k]];
+                    const double ratio = offBy(c, T) / tolerance(c, (pg(c.gt) - centre).norm());
+                    if (ratio > worst_ratio) worst_ratio = ratio, worst = int(k);
+                }
             }
             if (worst < 0) break;
             group.erase(group.begin() + worst);
