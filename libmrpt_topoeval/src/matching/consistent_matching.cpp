@@ -316,7 +316,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // is 0 where either map has no walls.
     auto agreeAndPin = [&](const WallAgreement& w)
     { return w.share >= p.min_part_wall_agreement && w.pinning <= p.max_wall_pinning; };
-    // (pinning measured only when the share is at least pinning_from_share).
+    // The agreement of the walls around a group under a fit; their pinning only when the share
+    // is at least pinning_from_share (a caller that refuses a smaller share need not pay for it).
     auto wallsOf =
         [&](const std::vector<int>& group, const Transform2D& fit, double pinning_from_share = 0.0)
     {
@@ -622,8 +623,9 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             int(group.size()) < needed() || int(group.size()) >= min_size)
             return false;
         // Where acceptable() asks for significance (the wider look, the links across the map's
-        // pieces), asked first: it is cheap, and the walls' share is not (on the Intel pair 271
-        // groups asked it, 232 of them there, for 20 ms). The pinning only when the share passes.
+        // pieces), it is asked first: it is cheap, and the walls are not (on the Intel pair 271
+        // groups asked for them, 232 of them there; with the pinning too, 70 ms). The pinning
+        // only when the share passes.
         if ((per_vertex > p.candidates_per_vertex || link_across) &&
             !significantAmongCandidates(group))
             return false;
