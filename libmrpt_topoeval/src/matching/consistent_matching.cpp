@@ -478,6 +478,17 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         return log10FalseAlarms(double(n), double(group.size()), density) <=
                std::log10(p.max_false_alarms);
     };
+    // In the wider look at the leftovers (leftover_candidates_per_vertex) the longer lists
+    // make chance groups likelier: there a group must be significant as a first group must
+    // be. Without it, near-twins (whose first group is a chance one) gained 47 false pairs
+    // on corpus seeds 2-16; with it 6 (doc/matching.md, "A wider look at the leftovers").
+    // So must a group found with the links across the map's pieces, which come after the
+    // wider look (with it off, on the first lists).
+    auto significantWhereAsked = [&](const std::vector<int>& group)
+    {
+        return !(per_vertex > p.candidates_per_vertex || link_across) ||
+               significantAmongCandidates(group);
+    };
     // The rules a linked group must meet: extent, one rigid part, a bridge to the accepted
     // groups, similarity.
     auto acceptable = [&](const std::vector<int>& group)
@@ -486,16 +497,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         for (int i : group)
             for (int j : group)
                 extent = std::max(extent, (pg(cands[i].gt) - pg(cands[j].gt)).norm());
-        if (extent < p.min_group_extent_m) return false;
-        // In the wider look at the leftovers (leftover_candidates_per_vertex) the longer lists
-        // make chance groups likelier: there a group must be significant as a first group must
-        // be. Without it, near-twins (whose first group is a chance one) gained 47 false pairs
-        // on corpus seeds 2-16; with it 6 (doc/matching.md, "A wider look at the leftovers").
-        // So must a group found with the links across the map's pieces, which come after the
-        // wider look (with it off, on the first lists).
-        if ((per_vertex > p.candidates_per_vertex || link_across) &&
-            !significantAmongCandidates(group))
-            return false;
+        if (extent < p.min_group_extent_m || !significantWhereAsked(group)) return false;
         // One rigid part, as the paper's brokenness groups are (its SquaredErrorThreshold): a
         // chance group keeps every pair within its own tolerance but spreads the errors to the
         // limit (two column halls of different buildings: 0 of 17 pairs true).
@@ -622,13 +624,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (!(p.min_unlinked_part_wall_agreement > 0.0) || out.cores.empty() ||
             int(group.size()) < needed() || int(group.size()) >= min_size)
             return false;
-        // Where acceptable() asks for significance (the wider look, the links across the map's
-        // pieces), it is asked first: it is cheap, and the walls are not (on the Intel pair 271
-        // groups asked for them, 232 of them there; with the pinning too, 70 ms). The pinning
-        // only when the share passes.
-        if ((per_vertex > p.candidates_per_vertex || link_across) &&
-            !significantAmongCandidates(group))
-            return false;
+        // Significance (where acceptable() asks for it) first: it is cheap, and the walls are
+        // not (on the Intel pair 271 groups asked for them, 232 of them in the later looks;
+        // with the pinning too, 70 ms). The pinning only when the share passes.
+        if (!significantWhereAsked(group)) return false;
         const WallAgreement w =
             wallsOf(group, fitOf(group, nullptr), p.min_unlinked_part_wall_agreement);
         return w.share >= p.min_unlinked_part_wall_agreement && w.pinning <= p.max_wall_pinning &&
@@ -649,13 +648,15 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             double mse = 0.0;
             const Transform2D T = fitOf(group, &mse);
             const Eigen::Vector2d centre = centreOf(group);
-            int worst = -1;
-            double worst_excess = 0.0;
+            // The pair farthest beyond its tolerance, and the one placed worst against it.
+            int worst = -1, worst_placed = 0;
+            double worst_excess = 0.0, worst_ratio = -1.0;
             for (std::size_t k = 0; k < group.size(); ++k)
             {
                 const Candidate& c = cands[group[k]];
-                const double excess = offBy(c, T) - tolerance(c, (pg(c.gt) - centre).norm());
-                if (excess > worst_excess) worst_excess = excess, worst = int(k);
+                const double error = offBy(c, T), tol = tolerance(c, (pg(c.gt) - centre).norm());
+                if (error - tol > worst_excess) worst_excess = error - tol, worst = int(k);
+                if (error / tol > worst_ratio) worst_ratio = error / tol, worst_placed = int(k);
             }
             // Every pair within its tolerance, but the fit not one rigid part: a further
             // group loses the pair placed worst against its tolerance (a hall's vertex that
@@ -663,15 +664,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             // refused whole by acceptable() instead.
             if (worst < 0 && p.trim_further_groups_to_rigid && !out.cores.empty() &&
                 mse > p.max_group_squared_error_m2 && int(group.size()) > need)
-            {
-                double worst_ratio = -1.0;
-                for (std::size_t k = 0; k < group.size(); ++k)
-                {
-                    const Candidate& c = cands[group[k]];
-                    const double ratio = offBy(c, T) / tolerance(c, (pg(c.gt) - centre).norm());
-                    if (ratio > worst_ratio) worst_ratio = ratio, worst = int(k);
-                }
-            }
+                worst = worst_placed;
             if (worst < 0) break;
             group.erase(group.begin() + worst);
         }
