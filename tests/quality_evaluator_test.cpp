@@ -11,8 +11,10 @@
 #include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/graph/build_graph.h>
 #include <mrpt_topoeval/map_io.h>
+#include <mrpt_topoeval/matching/match_graphs.h>
 #include <mrpt_topoeval/output.h>
 #include <mrpt_topoeval/pipeline/evaluate.h>
+#include <mrpt_topoeval/similarity/vertex_similarity.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -764,6 +766,37 @@ TEST(QualityEvaluator, BrokenOnceTwiceThrice)
             for (double e : expected)
                 best = std::min(best, std::abs(std::remainder(grp.transform.yaw_deg - e, 360.0)));
             EXPECT_LE(best, 3.0) << "broken " << n << ": group yaw " << grp.transform.yaw_deg;
+        }
+    }
+}
+
+// With a second thread brokenness is measured there, on its own wall indexes, while this one
+// measures accuracy: the report must be the one a single thread makes, field by field.
+TEST(QualityEvaluator, TheReportDoesNotDependOnTheThreads)
+{
+    const auto campus = makeCampusMap();
+    const auto broken = brokenCampus(2);
+    const TopologyGraph g = buildTopologyGraph(campus), m = buildTopologyGraph(broken);
+    const GraphMatch match = matchGraphs(g, m, attributeSimilarity(g, m, {}));
+    const QualityReport one = evaluateMatch(g, m, match, {}, 1);
+    ASSERT_EQ(one.brokenness.degree, 2);  // groups to compare
+    ASSERT_GT(one.relative_accuracy.by_walls, 0u);
+    for (unsigned threads : {2u, 3u})
+    {
+        const QualityReport r = evaluateMatch(g, m, match, {}, threads);
+        EXPECT_EQ(r.quality, one.quality) << threads;
+        EXPECT_EQ(r.relative_accuracy.rmse_m, one.relative_accuracy.rmse_m) << threads;
+        EXPECT_EQ(r.relative_accuracy.by_walls, one.relative_accuracy.by_walls) << threads;
+        EXPECT_EQ(r.brokenness.degree, one.brokenness.degree) << threads;
+        ASSERT_EQ(r.brokenness.groups.size(), one.brokenness.groups.size()) << threads;
+        for (std::size_t k = 0; k < r.brokenness.groups.size(); ++k)
+        {
+            const BrokennessGroup &a = r.brokenness.groups[k], &b = one.brokenness.groups[k];
+            EXPECT_EQ(a.gt_vertices, b.gt_vertices) << threads << " group " << k;
+            EXPECT_EQ(a.squared_error_m2, b.squared_error_m2) << threads << " group " << k;
+            EXPECT_EQ(a.transform.x_m, b.transform.x_m) << threads << " group " << k;
+            EXPECT_EQ(a.transform.y_m, b.transform.y_m) << threads << " group " << k;
+            EXPECT_EQ(a.transform.yaw_deg, b.transform.yaw_deg) << threads << " group " << k;
         }
     }
 }

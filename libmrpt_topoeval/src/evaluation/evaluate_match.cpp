@@ -9,11 +9,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <future>
 #include <limits>
 #include <map>
 #include <numeric>
 #include <queue>
 #include <sstream>
+#include <system_error>
 
 #include "evaluation/wall_places.h"
 #include "geometry/horn.h"
@@ -662,7 +665,7 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
 }  // namespace
 
 QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGraph& map,
-                            const GraphMatch& match, const QualityParameters& p)
+                            const GraphMatch& match, const QualityParameters& p, unsigned threads)
 {
     p.validate();
     // Before anything indexes the graphs with the match's pairs.
@@ -689,6 +692,28 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
         r.local_consistency = localConsistency(ground_truth, match, {}, {}, p);
         r.messages.push_back("nothing was matched: coverage and quality are 0");
         return r;
+    }
+
+    // Brokenness does not depend on the accuracy steps below: with a second thread it runs there,
+    // with its own wall indexes (they are not for concurrent use), while this one places the
+    // pairs by their walls (an ICP each); the report is the same.
+    std::future<Brokenness> broken_future;
+    if (threads > 1)
+    {
+        try
+        {
+            broken_future =
+                std::async(std::launch::async,
+                           [&]
+                           {
+                               internal::Walls own(ground_truth, map);
+                               return brokenness(ground_truth, map, gt_view, match, p, own);
+                           });
+        }
+        catch (const std::system_error&)
+        {
+            // No thread to be had (a process or container limit): it runs here, below.
+        }
     }
 
     // Coverage (paper IV): share of the ground truth's matchable vertices that were matched.
@@ -775,7 +800,8 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     r.relative_accuracy.rmse_m = std::sqrt(sq / double(pg.size()));
     r.relative_accuracy.score = invScore(r.relative_accuracy.rmse_m, p.accuracy_scale_m);
 
-    r.brokenness = brokenness(ground_truth, map, gt_view, match, p, walls);
+    r.brokenness = broken_future.valid() ? broken_future.get()
+                                         : brokenness(ground_truth, map, gt_view, match, p, walls);
 
     // Quality: weighted mean of coverage, relative accuracy, the mean of the non-empty
     // consistency classes, and brokenness (doc/quality.md).

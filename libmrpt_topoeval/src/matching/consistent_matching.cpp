@@ -36,6 +36,39 @@ struct Candidate
     double uncertainty_m = 0.0;  //!< clearance_tolerance_share x the smaller clearance
 };
 
+/** The distances between a graph's vertices, |p_a - p_b| as (p_a - p_b).norm() gives it, made
+ * once per search: the consistency graph asks for two of them for every two candidates, again
+ * after every accepted group, and the consensus for every pair it places (on the Intel pair
+ * these square roots were a fifth of the match's time). Only while a table holds at most
+ * kMaxTable entries (graphs of up to 1024 vertices, 8 MB); else each is computed when asked,
+ * alike. */
+class VertexDistances
+{
+public:
+    explicit VertexDistances(const TopologyGraph& g) : m_g(g), m_n(g.vertices.size())
+    {
+        if (m_n * m_n > kMaxTable) return;
+        m_table.resize(m_n * m_n);
+        for (std::size_t a = 0; a < m_n; ++a)
+            for (std::size_t b = 0; b < m_n; ++b) m_table[a * m_n + b] = computed(int(a), int(b));
+    }
+    double operator()(int a, int b) const
+    {
+        return m_table.empty() ? computed(a, b) : m_table[std::size_t(a) * m_n + std::size_t(b)];
+    }
+
+private:
+    static constexpr std::size_t kMaxTable = std::size_t(1) << 20;
+    double computed(int a, int b) const
+    {
+        return (m_g.vertices[std::size_t(a)].position_m - m_g.vertices[std::size_t(b)].position_m)
+            .norm();
+    }
+    const TopologyGraph& m_g;
+    std::size_t m_n;
+    std::vector<double> m_table;
+};
+
 /** log10 of the number of false alarms (Desolneux, Moisan and Morel's a contrario test, as in
  * Moisan and Stival's AC-RANSAC) of a clique of s among n candidates whose consistency graph
  * has this density: the number of s-subsets times the chance that all their s(s-1)/2 distances
@@ -138,6 +171,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     const int n_gt = int(gt.vertices.size()), n_map = int(map.vertices.size());
     auto pg = [&](int a) -> const Eigen::Vector2d& { return gt.vertices[a].position_m; };
     auto pm = [&](int b) -> const Eigen::Vector2d& { return map.vertices[b].position_m; };
+    const VertexDistances dist_gt(gt), dist_map(map);
     auto degreeOk = [&](int a, int b)
     { return std::abs(ctx.gt.v[a].degree() - ctx.map.v[b].degree()) <= p.max_degree_difference; };
     auto uncertainty = [&](int a, int b)
@@ -213,7 +247,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             {
                 const Candidate &x = cands[i], &y = cands[j];
                 if (x.gt == y.gt || x.map == y.map) continue;
-                const double dg = (pg(x.gt) - pg(y.gt)).norm(), dm = (pm(x.map) - pm(y.map)).norm();
+                const double dg = dist_gt(x.gt, y.gt), dm = dist_map(x.map, y.map);
                 if (std::abs(dg - dm) <= distanceTolerance(x, y, dg, dm))
                 {
                     adjacent[std::size_t(i) * n + j] = adjacent[std::size_t(j) * n + i] = 1;
@@ -317,15 +351,16 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     auto agreeAndPin = [&](const WallAgreement& w)
     { return w.share >= p.min_part_wall_agreement && w.pinning <= p.max_wall_pinning; };
     // The agreement of the walls around a group under a fit; their pinning only when the share
-    // is at least pinning_from_share (a caller that refuses a smaller share need not pay for it).
+    // is at least pinning_from_share (a caller that refuses a smaller share need not pay for it;
+    // above 1: never), and only as far as max_wall_pinning, the most any caller accepts.
     auto wallsOf =
-        [&](const std::vector<int>& group, const Transform2D& fit, double pinning_from_share = 0.0)
+        [&](const std::vector<int>& group, const Transform2D& fit, double pinning_from_share)
     {
         indexWalls();
         std::vector<std::pair<int, int>> pairs;
         for (int i : group) pairs.emplace_back(cands[i].gt, cands[i].map);
         return wallAgreement(gt, map, *gt_walls, *map_walls, pairs, fit, p.wall_margin_m,
-                             wall_tolerance, pinning_from_share);
+                             wall_tolerance, pinning_from_share, p.max_wall_pinning);
     };
     // One pair's walls: their agreement under a transform (pinning asked when
     // pinning_from_share <= 1), and their ICP alignment from a transform, reaching as far as
@@ -334,7 +369,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     {
         indexWalls();
         return wallAgreement(gt, map, *gt_walls, *map_walls, {{a, b}}, t, p.wall_margin_m,
-                             wall_tolerance, pinning_from_share);
+                             wall_tolerance, pinning_from_share, p.max_wall_pinning);
     };
     auto pairWallsByIcp = [&](int a, int b, const Transform2D& start, double error)
     {
@@ -345,7 +380,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // The small part's wall test of a group under a fit; never passed with the test off
     // (min_part_wall_agreement = 0).
     auto wallsAgreeAndPin = [&](const std::vector<int>& group, const Transform2D& fit)
-    { return p.min_part_wall_agreement > 0.0 && agreeAndPin(wallsOf(group, fit)); };
+    {
+        return p.min_part_wall_agreement > 0.0 &&
+               agreeAndPin(wallsOf(group, fit, p.min_part_wall_agreement));
+    };
     // Asked of further groups, and of a small graph's first group: a first group that decides
     // that two big maps show one place has its own tests (significance, its walls and its
     // pairs' walls), but a small graph's has only its similarity or its walls.
@@ -495,8 +533,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     {
         double extent = 0.0;
         for (int i : group)
-            for (int j : group)
-                extent = std::max(extent, (pg(cands[i].gt) - pg(cands[j].gt)).norm());
+            for (int j : group) extent = std::max(extent, dist_gt(cands[i].gt, cands[j].gt));
         if (extent < p.min_group_extent_m || !significantWhereAsked(group)) return false;
         // One rigid part, as the paper's brokenness groups are (its SquaredErrorThreshold): a
         // chance group keeps every pair within its own tolerance but spreads the errors to the
@@ -531,8 +568,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                     const int m = ctx.gt_to_map[g];
                     if (m < 0) continue;
                     neighbour = true;
-                    const double dg = (pg(g) - pg(cands[i].gt)).norm();
-                    const double dm = (pm(m) - pm(cands[i].map)).norm();
+                    const double dg = dist_gt(g, cands[i].gt);
+                    const double dm = dist_map(m, cands[i].map);
                     bridge = bridge || std::abs(dg - dm) <= p.distance_tolerance_m +
                                                                 cands[i].uncertainty_m +
                                                                 p.part_bridge_ratio * dg;
@@ -755,14 +792,13 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             {
                 const Candidate &ci = cands[pool[i]], &cj = cands[pool[j]];
                 if (!adjacent[std::size_t(pool[i]) * n + pool[j]] || !linkedPairs(ci, cj)) continue;
-                if ((pg(ci.gt) - pg(cj.gt)).norm() < p.min_consensus_baseline_m) continue;
+                if (dist_gt(ci.gt, cj.gt) < p.min_consensus_baseline_m) continue;
                 const Transform2D T = hornAlign({pg(ci.gt), pg(cj.gt)}, {pm(ci.map), pm(cj.map)});
                 in.clear();
                 for (int k : pool)
                 {
                     const Candidate& c = cands[k];
-                    const double dist =
-                        std::min((pg(c.gt) - pg(ci.gt)).norm(), (pg(c.gt) - pg(cj.gt)).norm());
+                    const double dist = std::min(dist_gt(c.gt, ci.gt), dist_gt(c.gt, cj.gt));
                     const double err = offBy(c, T);
                     if (err <= tolerance(c, dist)) in.emplace_back(err, k);
                 }
@@ -835,7 +871,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         {
             std::vector<int> group = clique;
             if (!settle(group)) continue;
-            const double walls = by_walls ? wallsOf(group, fitOf(group, nullptr)).share : 0.0;
+            const double walls = by_walls ? wallsOf(group, fitOf(group, nullptr), 2.0).share : 0.0;
             const std::tuple<std::size_t, double, double> key{group.size(), walls,
                                                               meanSimilarity(group)};
             if (key > best_key) best_key = key, best = clique, best_group = std::move(group);
@@ -908,7 +944,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             if (int(group.size()) < p.first_group_wall_check_pairs &&
                 p.min_first_group_wall_agreement > 0.0)
             {
-                wall_share = wallsOf(group, fitOf(group, nullptr)).share;
+                wall_share = wallsOf(group, fitOf(group, nullptr), 2.0).share;
                 if (wall_share < p.min_first_group_wall_agreement) return false;
             }
             if (p.first_group_disagreeing_pair_share > 0.0)
@@ -1094,7 +1130,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                     std::vector<int> map_near;
                     bool linked = false;
                     for (int x = 0; x < n_gt; ++x)
-                        if (group_of_gt[x] == int(g)) near.emplace_back((pg(x) - pg(a)).norm(), x);
+                        if (group_of_gt[x] == int(g)) near.emplace_back(dist_gt(x, a), x);
                     // The pairs within growing_radius_m. In the pass without links, a vertex
                     // of a graph piece that holds no group's core (a room the plan's walls cut
                     // off) farther than that from all of a group's pairs but one is placed by

@@ -207,15 +207,20 @@ const std::vector<Eigen::Vector2d>& WallIndex::around(const Eigen::Vector2d& p, 
     return out;
 }
 
-std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex& walls,
-                                         const std::vector<int>& vertices, double margin_m,
-                                         std::size_t max_points)
+const std::vector<Eigen::Vector2d>& WallIndex::aroundVertices(const TopologyGraph& g,
+                                                              const std::vector<int>& vertices,
+                                                              double margin_m,
+                                                              std::size_t max_points) const
 {
-    std::vector<Eigen::Vector2d> pts;
+    std::vector<int> sorted = vertices;
+    std::sort(sorted.begin(), sorted.end());
+    const auto [at, fresh] =
+        m_around_vertices.try_emplace({&g, std::move(sorted), margin_m, max_points});
+    std::vector<Eigen::Vector2d>& pts = at->second;
+    if (!fresh) return pts;
     for (int v : vertices)
     {
-        const auto& near =
-            walls.around(g.vertices[v].position_m, g.vertices[v].clearance_m + margin_m);
+        const auto& near = around(g.vertices[v].position_m, g.vertices[v].clearance_m + margin_m);
         pts.insert(pts.end(), near.begin(), near.end());
     }
     auto less = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b)
@@ -232,18 +237,25 @@ std::vector<Eigen::Vector2d> wallsAround(const TopologyGraph& g, const WallIndex
     return pts;
 }
 
+const std::vector<Eigen::Vector2d>& wallsAround(const TopologyGraph& g, const WallIndex& walls,
+                                                const std::vector<int>& vertices, double margin_m,
+                                                std::size_t max_points)
+{
+    return walls.aroundVertices(g, vertices, margin_m, max_points);
+}
+
 WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
                             const WallIndex& gt_walls, const WallIndex& map_walls,
                             const std::vector<std::pair<int, int>>& pairs,
                             const Transform2D& gt_T_map, double margin_m, double tolerance_m,
-                            double pinning_from_share)
+                            double pinning_from_share, double pinning_limit)
 {
     WallAgreement out;
     std::vector<int> gv, mv;
     for (const auto& [a, b] : pairs) gv.push_back(a), mv.push_back(b);
-    const std::vector<Eigen::Vector2d> from_gt =
+    const std::vector<Eigen::Vector2d>& from_gt =
         wallsAround(gt, gt_walls, gv, margin_m, kMaxWallPoints);
-    const std::vector<Eigen::Vector2d> from_map =
+    const std::vector<Eigen::Vector2d>& from_map =
         wallsAround(map, map_walls, mv, margin_m, kMaxWallPoints);
     if (from_gt.empty() || from_map.empty()) return out;
     out.walls_on_both = true;
@@ -267,14 +279,16 @@ WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
     };
     out.share = shareAt(Eigen::Vector2d::Zero());
     if (!(out.share > 0.0) || out.share < pinning_from_share) return out;
+    // The shifts stop at the first that takes the pinning over its limit.
     double moved = 0.0;
     for (int k = 0; k < 8; ++k)
     {
         const double a = k * M_PI / 4.0;
         moved =
             std::max(moved, shareAt(2.0 * tolerance_m * Eigen::Vector2d(std::cos(a), std::sin(a))));
+        out.pinning = moved / out.share;
+        if (out.pinning > pinning_limit) break;
     }
-    out.pinning = moved / out.share;
     return out;
 }
 

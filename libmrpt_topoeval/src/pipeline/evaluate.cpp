@@ -48,7 +48,8 @@ QualityReport scoreGraphs(const TopologyGraph& gt, const mrpt::maps::COccupancyG
     const GraphMatch match = matchGraphs(gt, map, s, params.matcher);
     const double t_match = msSince(t2);
     const auto t3 = Clock::now();
-    QualityReport r = evaluateMatch(gt, map, match, params.quality);
+    QualityReport r = evaluateMatch(gt, map, match, params.quality,
+                                    internal::workerThreads(params.similarity.threads));
     r.timing_ms["graphs"] = t_graphs;
     r.timing_ms["similarity"] = t_sim;
     r.timing_ms["match"] = t_match;

@@ -56,7 +56,7 @@ TOPOEVAL_PARAMETER_TABLE(
     integer(TOPOEVAL_KEY(icp_max_degree_difference), "1",
             "ICP only for pairs whose degrees differ by at most this", atLeast(0)),
     integer(TOPOEVAL_KEY(threads), "1",
-            "worker threads (ICP pairs; both graphs of evaluate()); 0 = all cores",
+            "worker threads (ICP pairs; evaluate(): both graphs, brokenness); 0 = all cores",
             atLeast(0).atMost(256)))
 
 }  // namespace mrpt_topoeval

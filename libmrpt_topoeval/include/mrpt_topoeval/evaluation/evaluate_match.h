@@ -148,8 +148,11 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
 
 /** Paper IV: coverage, global and relative accuracy (Horn's closed form in double precision on
  * centred points), local consistency per class of graph distance, brokenness groups, and one
- * quality score, from a match of the ground truth's graph with the map's. */
+ * quality score, from a match of the ground truth's graph with the map's. With `threads` above
+ * 1 brokenness is measured on a second thread while this one measures accuracy; the report
+ * does not depend on it. evaluate() passes `[VertexSimilarity] threads` (0: all cores). */
 QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGraph& map,
-                            const GraphMatch& match, const QualityParameters& params = {});
+                            const GraphMatch& match, const QualityParameters& params = {},
+                            unsigned threads = 1);
 
 }  // namespace mrpt_topoeval

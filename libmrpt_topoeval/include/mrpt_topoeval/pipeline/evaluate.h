@@ -38,7 +38,8 @@ SimilarityMatrix vertexSimilarity(const TopologyGraph& gt,
 /** The one-call pipeline: both graphs, vertex similarity (attributes or ICP as configured),
  * match, evaluation. Graphs are returned through the pointers if given. With
  * `params.similarity.threads` other than 1 the two graphs are built side by side, on this thread
- * and one more; the result does not depend on it. */
+ * and one more, and so are brokenness and accuracy (evaluateMatch()); the result does not
+ * depend on it. */
 QualityReport evaluate(const mrpt::maps::COccupancyGridMap2D& ground_truth,
                        const mrpt::maps::COccupancyGridMap2D& map, const Parameters& params,
                        TopologyGraph* gt_graph = nullptr, TopologyGraph* map_graph = nullptr);

@@ -73,9 +73,9 @@ struct VertexSimilarityParameters : public mrpt::config::CLoadableOptions
     double icp_rmse_tolerance_m = 0.25;
     /** Only pairs whose degrees differ by at most this are aligned; others get 0 [1]. */
     int icp_max_degree_difference = 0;
-    /** Worker threads for ICP pairs, and for building both graphs side by side in
-     * evaluate(ground_truth, map, ...) when above 1; 0 = hardware concurrency. Results do not
-     * depend on it. */
+    /** Worker threads for ICP pairs, and in evaluate() when above 1 for building both graphs
+     * side by side and for measuring brokenness beside accuracy; 0 = hardware concurrency.
+     * Results do not depend on it. */
     int threads = 0;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
