@@ -112,6 +112,11 @@ TOPOEVAL_PARAMETER_TABLE(
          "consistent: a small further group whose links leave no piece big enough is kept whole "
          "when its walls agree on this share and pin it (0: off)",
          atLeast(0).atMost(1)),
+    flag(TOPOEVAL_KEY(walls_under_own_alignment),
+         "consistent: a scattered or unlinked small part whose walls fail under its fit is "
+         "asked again under their own ICP alignment, when it keeps every pair within tolerance"),
+    real(TOPOEVAL_KEY(own_alignment_min_wall_agreement), "0..1",
+         "consistent: ... when this share of its walls agree under its fit", atLeast(0).atMost(1)),
     real(TOPOEVAL_KEY(part_bridge_ratio), "ratio",
          "consistent: a further group's neighbour pairs keep their distance within this",
          atLeast(0)),

@@ -377,12 +377,50 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         return alignWallsByIcp(gt, map, *gt_walls, *map_walls, {{a, b}}, p.wall_margin_m, start,
                                std::max(error, wall_tolerance));
     };
-    // The small part's wall test of a group under a fit; never passed with the test off
-    // (min_part_wall_agreement = 0).
-    auto wallsAgreeAndPin = [&](const std::vector<int>& group, const Transform2D& fit)
+    // A further group's walls under their own alignment (walls_under_own_alignment): the ICP
+    // of the walls around its vertices from its fit, reaching as far as its pairs' largest
+    // error, kept when it still places every pair within its tolerance (as settling measures
+    // it, from the group's centre); none otherwise, for a first group, or with the rule off.
+    auto ownWallsAlignment = [&](const std::vector<int>& group,
+                                 const Transform2D& fit) -> std::optional<Transform2D>
+    {
+        if (!p.walls_under_own_alignment || out.cores.empty()) return std::nullopt;
+        indexWalls();
+        std::vector<std::pair<int, int>> pairs;
+        double reach = wall_tolerance;
+        for (int i : group)
+        {
+            pairs.emplace_back(cands[i].gt, cands[i].map);
+            reach = std::max(reach, offBy(cands[i], fit));
+        }
+        const auto own =
+            alignWallsByIcp(gt, map, *gt_walls, *map_walls, pairs, p.wall_margin_m, fit, reach);
+        if (!own) return std::nullopt;
+        const Eigen::Vector2d centre = centreOf(group);
+        for (int i : group)
+            if (offBy(cands[i], *own) > tolerance(cands[i], (pg(cands[i].gt) - centre).norm()))
+                return std::nullopt;
+        return own;
+    };
+    // The walls' agreement around a group under its fit, or, when that fails `passes` and
+    // `own_alignment` is asked, under their own alignment (above) if it has one and at least
+    // own_alignment_min_wall_agreement of the walls agree under the fit.
+    auto wallsOfGroup = [&](const std::vector<int>& group, const Transform2D& fit,
+                            double pinning_from_share, auto passes, bool own_alignment)
+    {
+        const WallAgreement w = wallsOf(group, fit, pinning_from_share);
+        if (passes(w) || !own_alignment || w.share < p.own_alignment_min_wall_agreement) return w;
+        const auto own = ownWallsAlignment(group, fit);
+        return own ? wallsOf(group, *own, pinning_from_share) : w;
+    };
+    // The small part's wall test of a group under a fit (or their own alignment, when asked);
+    // never passed with the test off (min_part_wall_agreement = 0).
+    auto wallsAgreeAndPin =
+        [&](const std::vector<int>& group, const Transform2D& fit, bool own_alignment = false)
     {
         return p.min_part_wall_agreement > 0.0 &&
-               agreeAndPin(wallsOf(group, fit, p.min_part_wall_agreement));
+               agreeAndPin(
+                   wallsOfGroup(group, fit, p.min_part_wall_agreement, agreeAndPin, own_alignment));
     };
     // Asked of further groups, and of a small graph's first group: a first group that decides
     // that two big maps show one place has its own tests (significance, its walls and its
@@ -647,7 +685,9 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             }
             if (2 * placed >= core.size()) return false;
         }
-        return acceptable(group) && wallsConfirm(group, fit);
+        // Its walls under their own alignment when their fit's fails (walls_under_own_alignment):
+        // the whole is otherwise a part already.
+        return acceptable(group) && wallsAgreeAndPin(group, fit, true);
     };
     // A small further group whose links leave no piece big enough (a part of 3 or 4 pairs
     // whose vertices between them changed at the cut, or lie farther apart than support_hops
@@ -665,9 +705,11 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         // not (on the Intel pair 271 groups asked for them, 232 of them in the later looks;
         // with the pinning too, 70 ms). The pinning only when the share passes.
         if (!significantWhereAsked(group)) return false;
-        const WallAgreement w =
-            wallsOf(group, fitOf(group, nullptr), p.min_unlinked_part_wall_agreement);
-        return w.share >= p.min_unlinked_part_wall_agreement && w.pinning <= p.max_wall_pinning &&
+        auto passes = [&](const WallAgreement& w) {
+            return w.share >= p.min_unlinked_part_wall_agreement && w.pinning <= p.max_wall_pinning;
+        };
+        return passes(wallsOfGroup(group, fitOf(group, nullptr), p.min_unlinked_part_wall_agreement,
+                                   passes, true)) &&
                acceptable(group);
     };
     // A candidate group becomes a group: a rigid fit (distances alone accept a mirror image)
