@@ -282,6 +282,10 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         for (int i : set) centre += pg(cands[i].gt);
         return Eigen::Vector2d(centre / double(set.size()));
     };
+    // Whether a fit places a candidate within its tolerance, the distance taken from `centre`
+    // (a set's centre, as settling measures it).
+    auto placedBy = [&](const Candidate& c, const Transform2D& T, const Eigen::Vector2d& centre)
+    { return offBy(c, T) <= tolerance(c, (pg(c.gt) - centre).norm()); };
     // Vertices within support_hops edges, sorted, for the links between pairs.
     std::vector<std::vector<int>> near_gt(n_gt), near_map(n_map);
     for (int a = 0; a < n_gt; ++a)
@@ -398,8 +402,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (!own) return std::nullopt;
         const Eigen::Vector2d centre = centreOf(group);
         for (int i : group)
-            if (offBy(cands[i], *own) > tolerance(cands[i], (pg(cands[i].gt) - centre).norm()))
-                return std::nullopt;
+            if (!placedBy(cands[i], *own, centre)) return std::nullopt;
         return own;
     };
     // The walls' agreement around a group under its fit, or, when that fails `passes` and
@@ -679,10 +682,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         {
             std::size_t placed = 0;
             for (const auto& [a, b] : core)
-            {
-                const Candidate c{a, b, S(a, b), uncertainty(a, b)};
-                placed += offBy(c, fit) <= tolerance(c, (pg(a) - centre).norm()) ? 1 : 0;
-            }
+                placed += placedBy({a, b, S(a, b), uncertainty(a, b)}, fit, centre) ? 1 : 0;
             if (2 * placed >= core.size()) return false;
         }
         // Its walls under their own alignment when their fit's fails (walls_under_own_alignment):
@@ -767,11 +767,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             std::vector<int> joined = group;
             const Transform2D piece_fit = fitOf(group, nullptr);
             const Eigen::Vector2d centre = centreOf(group);
-            auto placed = [&](int i)
-            {
-                const Candidate& c = cands[i];
-                return offBy(c, piece_fit) <= tolerance(c, (pg(c.gt) - centre).norm());
-            };
+            auto placed = [&](int i) { return placedBy(cands[i], piece_fit, centre); };
             for (std::size_t k = 1; k < pieces.size(); ++k)
                 if (int(pieces[k].size()) >= p.min_joined_piece_pairs &&
                     std::all_of(pieces[k].begin(), pieces[k].end(), placed))

@@ -237,13 +237,6 @@ const std::vector<Eigen::Vector2d>& WallIndex::aroundVertices(const TopologyGrap
     return pts;
 }
 
-const std::vector<Eigen::Vector2d>& wallsAround(const TopologyGraph& g, const WallIndex& walls,
-                                                const std::vector<int>& vertices, double margin_m,
-                                                std::size_t max_points)
-{
-    return walls.aroundVertices(g, vertices, margin_m, max_points);
-}
-
 WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
                             const WallIndex& gt_walls, const WallIndex& map_walls,
                             const std::vector<std::pair<int, int>>& pairs,
@@ -254,9 +247,9 @@ WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
     std::vector<int> gv, mv;
     for (const auto& [a, b] : pairs) gv.push_back(a), mv.push_back(b);
     const std::vector<Eigen::Vector2d>& from_gt =
-        wallsAround(gt, gt_walls, gv, margin_m, kMaxWallPoints);
+        gt_walls.aroundVertices(gt, gv, margin_m, kMaxWallPoints);
     const std::vector<Eigen::Vector2d>& from_map =
-        wallsAround(map, map_walls, mv, margin_m, kMaxWallPoints);
+        map_walls.aroundVertices(map, mv, margin_m, kMaxWallPoints);
     if (from_gt.empty() || from_map.empty()) return out;
     out.walls_on_both = true;
     // The share under the fit moved by `shift` (in the ground truth's frame).
@@ -305,7 +298,7 @@ std::optional<Transform2D> alignWallsByIcp(const TopologyGraph& gt, const Topolo
         std::vector<int> vertices;
         for (const auto& [a, b] : pairs) vertices.push_back(ground_truth ? a : b);
         mrpt::maps::CSimplePointsMap c;
-        for (const auto& q : wallsAround(g, index, vertices, margin_m, 0))
+        for (const auto& q : index.aroundVertices(g, vertices, margin_m, 0))
             c.insertPoint(float(q.x()), float(q.y()), 0.0f);
         return c;
     };

@@ -115,12 +115,6 @@ struct WallAgreement
     bool walls_on_both = false;
 };
 
-/** The wall points within each of `vertices`' clearance + `margin_m` (WallIndex::
- * aroundVertices). */
-const std::vector<Eigen::Vector2d>& wallsAround(const TopologyGraph& g, const WallIndex& walls,
-                                                const std::vector<int>& vertices, double margin_m,
-                                                std::size_t max_points);
-
 /** The agreement of the walls around `pairs` (ground-truth vertex, map vertex) under
  * `gt_T_map` (map to ground truth). The pinning is measured only when the share is at least
  * `pinning_from_share` (else left at 1: a caller that refuses such a share need not pay for
