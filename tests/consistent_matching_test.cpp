@@ -1495,6 +1495,52 @@ TEST(ConsistentMatching, AFirstGroupIsFoundAmongTheMaximalCliques)
     EXPECT_EQ(r0.quality, 0.0);
 }
 
+// A building of wings cut in four (the validator's multi_wing_10001/broken_3, held-out corpus seed
+// 10; tests/data/maximal_cliques_in_turn) whose maximum clique (13 pairs: 7 of part 0, 3 of part
+// 3, 1 of part 2, 2 false) settles to 5 pairs that are not significant among 216 candidates: it
+// settled, so the maximal cliques were not asked, and its pairs left the pool with part 0's.
+// With first_group_maximal_cliques_in_turn they are asked, and their 23 groups tried in turn:
+// the four best (8, 8, 6 and 6 pairs mixing parts 0 and 1) have walls that disagree (shares
+// 0.33-0.47); the fifth, 6 pairs of part 0, has walls that agree (0.90) and pin its fit, and is
+// the first group. The validator's counterparts: {gt, map, part}.
+TEST(ConsistentMatching, TheMaximalCliquesAreTriedInTurn)
+{
+    std::vector<TruthPair> truth = {
+        {0, 26, 1}, {1, 23, 1},  {2, 2, 3},   {3, 34, 0},  {4, 29, 1},  {5, 10, 3},  {7, 6, 3},
+        {8, 1, 3},  {9, 37, 0},  {11, 17, 3}, {12, 30, 0}, {13, 8, 3},  {15, 32, 0}, {17, 33, 0},
+        {18, 5, 3}, {19, 12, 2}, {20, 35, 0}, {21, 28, 2}, {22, 21, 2}, {23, 38, 0}, {24, 3, 2}};
+    // The validator's other true pair of the match: its per-part truth puts map 31 within 0.5 m
+    // of gt 12 too.
+    truth.push_back({12, 31, 0});
+    const auto partOf = partOfTruth(truth);
+    const auto [r, r0] = withAndWithout(
+        corpusCase("maximal_cliques_in_turn", "multi_wing_10001_broken_3"),
+        [](GraphMatcherParameters& m) { m.first_group_maximal_cliques_in_turn = false; });
+    // Every pair true, and the four parts are four brokenness groups. Part 0's room at the cut
+    // (gt 3, whose dead end part 1's fit places within tolerance too) joins part 1's group: of
+    // every group all pairs but at most one are of one part.
+    for (const auto& p : r.match.pairs)
+        EXPECT_GE(partOf(p.ground_truth, p.map), 0) << p.ground_truth << " -> " << p.map;
+    EXPECT_GE(r.match.pairs.size(), 20u);
+    EXPECT_EQ(r.brokenness.degree, 3);
+    ASSERT_EQ(r.brokenness.groups.size(), 4u);
+    std::set<int> majorities;
+    for (const auto& g : r.brokenness.groups)
+    {
+        std::map<int, std::size_t> count;
+        for (int v : g.gt_vertices) ++count[partOf(v, r.match.mapVertexOf(v))];
+        const auto most =
+            std::max_element(count.begin(), count.end(),
+                             [](const auto& x, const auto& y) { return x.second < y.second; });
+        EXPECT_GE(most->second + 1, g.gt_vertices.size());
+        majorities.insert(most->first);
+    }
+    EXPECT_EQ(majorities, (std::set<int>{0, 1, 2, 3}));
+    // Without the rule nothing is matched.
+    EXPECT_TRUE(r0.match.pairs.empty());
+    EXPECT_EQ(r0.quality, 0.0);
+}
+
 // A pair whose own walls turn away from its group's turn is another part's (max_pair_turn_deg):
 // held-out corpus seed 7's multi_wing_7001/broken_3, a building of wings cut in four (the maps
 // in tests/data/turned_pair). Near the pivot of the turn between parts 1 and 2 a consensus of

@@ -104,6 +104,13 @@ TOPOEVAL_PARAMETER_TABLE(
     flag(TOPOEVAL_KEY(first_group_from_maximal_cliques),
          "consistent: when the maximum clique does not settle, the maximal clique that settles "
          "best is the first group if its walls agree and pin it"),
+    flag(TOPOEVAL_KEY(first_group_maximal_cliques_in_turn),
+         "consistent: ... asked also when the maximum clique's group is refused, and tried in "
+         "turn, best first, until one passes"),
+    real(TOPOEVAL_KEY(first_group_in_turn_min_wall_agreement), "0..1",
+         "consistent: ... each but the best of a clique that did not settle needs this share of "
+         "its walls agreeing",
+         atLeast(0).atMost(1)),
     real(TOPOEVAL_KEY(max_pair_turn_deg), "deg",
          "consistent: a pair whose own walls turn more than this against its group's leaves it "
          "(0: off)",

@@ -887,34 +887,59 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         core_fits.push_back(fitOf(group, nullptr));
         buildCandidates();
     };
-    // On a small graph the maximum clique is often tied (a flat's layout and its robot map:
-    // among 26 candidates two cliques of 4, one of them true), and which one the search
-    // returns is chance; rejected, it takes the pairs it shares with the other along. So every
-    // maximal clique of at least the size needed is settled, and the first group is the
-    // clique that settles to the most pairs, then (`by_walls`) the one whose walls agree best
-    // under its fit, then the most similar; `fallback` (the maximum clique) when none settles.
-    // Also asked, without the walls, when a big graph's maximum clique does not settle
-    // (first_group_from_maximal_cliques, below). Returns the clique and the group it settled
-    // to (empty for the fallback).
-    auto bestMaximalClique = [&](const std::vector<int>& pool, const std::vector<int>& fallback,
-                                 bool by_walls) -> std::pair<std::vector<int>, std::vector<int>>
+    // The maximal cliques of the pool with at least the size needed (within max_clique_steps),
+    // each with the group it settles to; those that do not settle are left out.
+    auto settledMaximalCliques = [&](const std::vector<int>& pool)
     {
         std::size_t steps = 0;
         const std::vector<std::vector<int>> cliques =
             maximalCliques(adjacent, n, pool, needed(), std::size_t(p.max_clique_steps), &steps);
         out.clique_steps += steps;
-        std::vector<int> best = fallback, best_group;
-        std::tuple<std::size_t, double, double> best_key{0, 0.0, 0.0};
+        std::vector<std::pair<std::vector<int>, std::vector<int>>> settled;
         for (const std::vector<int>& clique : cliques)
         {
             std::vector<int> group = clique;
-            if (!settle(group)) continue;
-            const double walls = by_walls ? wallsOf(group, fitOf(group, nullptr), 2.0).share : 0.0;
+            if (settle(group)) settled.emplace_back(clique, std::move(group));
+        }
+        return settled;
+    };
+    // On a small graph the maximum clique is often tied (a flat's layout and its robot map:
+    // among 26 candidates two cliques of 4, one of them true), and which one the search
+    // returns is chance; rejected, it takes the pairs it shares with the other along. So every
+    // maximal clique of at least the size needed is settled, and the first group is the
+    // clique that settles to the most pairs, then the one whose walls agree best under its fit,
+    // then the most similar; `fallback` (the maximum clique) when none settles.
+    auto bestMaximalClique = [&](const std::vector<int>& pool, const std::vector<int>& fallback)
+    {
+        std::vector<int> best = fallback;
+        std::tuple<std::size_t, double, double> best_key{0, 0.0, 0.0};
+        for (const auto& [clique, group] : settledMaximalCliques(pool))
+        {
+            const double walls = wallsOf(group, fitOf(group, nullptr), 2.0).share;
             const std::tuple<std::size_t, double, double> key{group.size(), walls,
                                                               meanSimilarity(group)};
-            if (key > best_key) best_key = key, best = clique, best_group = std::move(group);
+            if (key > best_key) best_key = key, best = clique;
         }
-        return {best, best_group};
+        return best;
+    };
+    // The groups the maximal cliques of the pool settle to, each once, best first: the most
+    // pairs, then the most similar (not by their walls: first_group_from_maximal_cliques,
+    // below).
+    auto maximalCliqueGroups = [&](const std::vector<int>& pool)
+    {
+        std::vector<std::pair<std::tuple<std::size_t, double>, std::vector<int>>> groups;
+        std::set<std::vector<int>> seen;
+        for (auto& [clique, group] : settledMaximalCliques(pool))
+        {
+            std::sort(group.begin(), group.end());
+            if (!seen.insert(group).second) continue;
+            groups.push_back({{group.size(), meanSimilarity(group)}, std::move(group)});
+        }
+        std::stable_sort(groups.begin(), groups.end(),
+                         [](const auto& x, const auto& y) { return x.first > y.first; });
+        std::vector<std::vector<int>> ranked;
+        for (auto& g : groups) ranked.push_back(std::move(g.second));
+        return ranked;
     };
     // Asked once per search (first_group_from_maximal_cliques), not of a rival placement given
     // in advance (below).
@@ -946,7 +971,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             clique = search.run(pool);
             out.clique_steps += search.steps();
             if (small_graph && int(clique.size()) >= needed())
-                clique = bestMaximalClique(pool, clique, true).first;
+                clique = bestMaximalClique(pool, clique);
         }
         if (int(clique.size()) < needed()) break;
         for (int i : clique) rejected[pairKey(cands[i])] = 1;
@@ -1011,32 +1036,60 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             clique = bestConsensus(whole);
             ok = !clique.empty() && meanSimilarity(clique) >= p.min_small_group_similarity;
         }
-        // A maximum clique that mixes a broken map's parts, and whose own consensus is no
-        // group, takes the parts' true pairs with it when it leaves the pool: the next
-        // maximum clique is mixed again or a chance one. So, once per search, every maximal
-        // clique of the pool is settled, and the one that settles to the most pairs (then the
-        // most similar; not chosen by its walls, which it must then pass) is the first group
-        // when its walls agree and pin its fit, as a small part's must, and it passes the
-        // first group's tests below (doc/matching.md, "A first group among the maximal
-        // cliques").
-        if (!ok && !small_graph && p.first_group_from_maximal_cliques && !maximal_cliques_asked &&
-            !(attempt == 0 && first))
+        const bool settled = ok;
+        // The first group's tests (significant() above); the biggest group refused is reported.
+        auto firstGroupTests = [&](const std::vector<int>& group)
         {
-            maximal_cliques_asked = true;
-            clique = bestMaximalClique(pool, {}, false).second;
-            ok = !clique.empty() && wallsAgreeAndPin(clique, fitOf(clique, nullptr));
-        }
-        if (ok)
-        {
-            ok = significant(clique);
-            if (!ok && clique.size() > out.refused_size)
+            if (significant(group)) return true;
+            if (group.size() > out.refused_size)
             {
-                out.refused_size = clique.size();
+                out.refused_size = group.size();
                 out.refused_false_alarms = std::pow(10.0, log_nfa);
                 out.refused_candidates = pool.size();
                 out.refused_wall_share = wall_share;
                 out.refused_width_m = width;
                 out.refused_disagreeing_pairs = disagreeing;
+            }
+            return false;
+        };
+        if (ok) ok = firstGroupTests(clique);
+        // A maximum clique that mixes a broken map's parts, and whose own consensus is no
+        // group, takes the parts' true pairs with it when it leaves the pool: the next
+        // maximum clique is mixed again or a chance one. So, once per search, every maximal
+        // clique of the pool is settled, and the best group (the most pairs, then the most
+        // similar; not chosen by its walls) is the first group when its walls agree and pin its
+        // fit, as a small part's must, and it passes the first group's tests above
+        // (doc/matching.md, "A first group among the maximal cliques"). With
+        // first_group_maximal_cliques_in_turn they are asked also when the maximum clique
+        // settled but its group failed those tests (one part's corridor, along one line, while
+        // the clique held another part's pairs too), and the groups are tried in turn until one
+        // passes.
+        const bool in_turn = p.first_group_maximal_cliques_in_turn;
+        if (!ok && !small_graph && p.first_group_from_maximal_cliques && !maximal_cliques_asked &&
+            !(attempt == 0 && first) && (!settled || in_turn))
+        {
+            maximal_cliques_asked = true;
+            bool best = true;
+            for (std::vector<int>& group : maximalCliqueGroups(pool))
+            {
+                // The best group after a maximum clique that did not settle needs the walls of
+                // a small part (session 31). Every other group asked (a later one in turn, or
+                // any after a refused maximum clique) is one more chance for a chance group's
+                // walls to agree: it needs first_group_in_turn_min_wall_agreement of them.
+                const double min_share = best && !settled
+                                             ? p.min_part_wall_agreement
+                                             : std::max(p.min_part_wall_agreement,
+                                                        p.first_group_in_turn_min_wall_agreement);
+                best = false;
+                const WallAgreement w = wallsOf(group, fitOf(group, nullptr), min_share);
+                if (p.min_part_wall_agreement > 0.0 && w.share >= min_share &&
+                    w.pinning <= p.max_wall_pinning && firstGroupTests(group))
+                {
+                    clique = std::move(group);
+                    ok = true;
+                    break;
+                }
+                if (!in_turn) break;
             }
         }
         if (ok && !first)

@@ -221,6 +221,21 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * pool and the next maximum clique is tried (doc/matching.md, "A first group among the
      * maximal cliques") [bool]. */
     bool first_group_from_maximal_cliques = true;
+    /** With first_group_from_maximal_cliques, the maximal cliques are asked also when the
+     * maximum clique settles but its group fails a first group's tests (on a broken map a
+     * clique of two parts' pairs settles to one part's corridor, refused as a group along one
+     * line, and its pairs leave the pool with the other part's), and their groups are tried in
+     * turn, best first, until one passes every test (each chance group's walls fail, as the
+     * best one's do). false: only the best group, and only when the maximum clique does not
+     * settle (session 31; doc/matching.md, "Maximal cliques in turn") [bool]. */
+    bool first_group_maximal_cliques_in_turn = true;
+    /** The share of the walls that must agree around a first group found among the maximal
+     * cliques when it is not the one group session 31's rule asks (the best group after a
+     * maximum clique that did not settle, which needs min_part_wall_agreement): every further
+     * group tried is one more chance for a chance group's walls to agree. Held-out corpus seeds
+     * 2-16 and 23-24: true first groups found in turn 0.90-0.99, a near-twin's chance group 0.71
+     * (doc/matching.md, "Maximal cliques in turn") [0..1]. */
+    double first_group_in_turn_min_wall_agreement = 0.85;
     /** A group is one rigid part, and so is every pair of it: the walls around a pair, aligned
      * by their own ICP from the group's fit, turn as its part turns. A pair whose walls turn
      * more than this from the turn most of the group's pairs' walls agree on is another part's,
