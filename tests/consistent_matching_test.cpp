@@ -1541,6 +1541,54 @@ TEST(ConsistentMatching, TheMaximalCliquesAreTriedInTurn)
     EXPECT_EQ(r0.quality, 0.0);
 }
 
+// A further group whose walls disagree outright is refused (further_group_min_wall_agreement):
+// fresh corpus seed 26's column_hall_26004/broken_3 (tests/data/further_group_walls), a column
+// hall cut in four. Without the rule a fifth group of 5 pairs joins the hall's lattice
+// junctions a quarter turn off: their distances agree, their similarity is 0.65, and the walls
+// around them agree on 0.16 of their length; a break too many is found. The validator's
+// counterparts: {gt, map, part}.
+TEST(ConsistentMatching, AFurtherGroupWhoseWallsDisagreeIsRefused)
+{
+    std::vector<TruthPair> truth = {
+        {0, 27, 0},  {1, 10, 0},  {2, 45, 1},  {3, 30, 0},  {4, 50, 1},  {5, 39, 1},  {6, 34, 1},
+        {7, 15, 0},  {8, 22, 0},  {9, 26, 0},  {10, 33, 0}, {11, 38, 1}, {12, 44, 1}, {13, 46, 1},
+        {14, 46, 1}, {15, 3, 0},  {16, 8, 0},  {18, 21, 2}, {19, 19, 2}, {20, 19, 0}, {21, 24, 0},
+        {24, 49, 3}, {27, 37, 3}, {29, 35, 3}, {31, 28, 3}, {33, 14, 2}, {34, 12, 2}, {35, 47, 3},
+        {36, 17, 2}, {37, 43, 3}, {38, 2, 2},  {39, 32, 3}, {40, 25, 3}, {41, 5, 2},  {42, 41, 3},
+        {43, 9, 2},  {44, 16, 3}, {45, 0, 2},  {46, 1, 2}};
+    // The validator's other true pairs of the match: map vertices that its per-part truth also
+    // puts within 0.5 m of these ground-truth vertices.
+    truth.push_back({13, 48, 1});
+    truth.push_back({19, 21, 2});
+    const auto partOf = partOfTruth(truth);
+    const auto [r, r0] =
+        withAndWithout(corpusCase("further_group_walls", "column_hall_26004_broken_3"),
+                       [](GraphMatcherParameters& m) { m.further_group_min_wall_agreement = 0.0; });
+    // Groups whose pairs are mostly not in the truth.
+    auto chanceGroups = [&](const QualityReport& q)
+    {
+        int chance = 0;
+        for (const auto& g : q.brokenness.groups)
+        {
+            std::size_t off = 0;
+            for (int v : g.gt_vertices) off += partOf(v, q.match.mapVertexOf(v)) < 0 ? 1 : 0;
+            chance += 2 * off > g.gt_vertices.size() ? 1 : 0;
+        }
+        return chance;
+    };
+    // With the rule: three breaks, four groups, none of them a chance one, and one pair outside
+    // the truth (gt 17, which has no counterpart, paired with map 18).
+    EXPECT_EQ(r.brokenness.degree, 3);
+    EXPECT_EQ(chanceGroups(r), 0);
+    int off_truth = 0;
+    for (const auto& p : r.match.pairs) off_truth += partOf(p.ground_truth, p.map) < 0 ? 1 : 0;
+    EXPECT_LE(off_truth, 1);
+    EXPECT_GE(r.match.pairs.size(), 30u);
+    // Without it: the lattice's chance group, and a break too many.
+    EXPECT_EQ(chanceGroups(r0), 1);
+    EXPECT_EQ(r0.brokenness.degree, 4);
+}
+
 // A pair whose own walls turn away from its group's turn is another part's (max_pair_turn_deg):
 // held-out corpus seed 7's multi_wing_7001/broken_3, a building of wings cut in four (the maps
 // in tests/data/turned_pair). Near the pivot of the turn between parts 1 and 2 a consensus of
@@ -1797,17 +1845,24 @@ TEST(ConsistentMatching, AGroupOnlyDistancesVouchForIsRefused)
         {{44, 33}, 0}, {{46, 43}, 0}, {{46, 46}, 0}, {{47, 63}, 0}, {{48, 58}, 0}, {{49, 13}, 0},
         {{50, 28}, 0}, {{51, 53}, 0}, {{52, 14}, 0}};
     const std::set<std::pair<int, int>> chance = {{24, 32}, {25, 24}, {28, 38}, {36, 42}, {37, 36}};
-    // The walls of its pairs refuse it too (further_group_disagreeing_pair_share, session 24):
-    // "without" turns both rules off, each rule alone refuses it.
-    Parameters with = Parameters{}, without = Parameters{}, by_pairs_walls = Parameters{};
+    // The walls of its pairs refuse it too (further_group_disagreeing_pair_share, session 24),
+    // and the walls of the whole group (further_group_min_wall_agreement, session 35):
+    // "without" turns the three rules off, each rule alone refuses it.
+    Parameters with = Parameters{}, without = Parameters{}, by_pairs_walls = Parameters{},
+               by_group_walls = Parameters{};
     without.matcher.min_unconfirmed_group_similarity = 0.0;
     without.matcher.further_group_disagreeing_pair_share = 0.0;
-    ownAlignmentOff(without.matcher);  // it finds part 1 without the two rules
+    without.matcher.further_group_min_wall_agreement = 0.0;
+    ownAlignmentOff(without.matcher);  // it finds part 1 without the rules
     by_pairs_walls.matcher.min_unconfirmed_group_similarity = 0.0;
+    by_pairs_walls.matcher.further_group_min_wall_agreement = 0.0;
+    by_group_walls.matcher.min_unconfirmed_group_similarity = 0.0;
+    by_group_walls.matcher.further_group_disagreeing_pair_share = 0.0;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
     const QualityReport r1 = evaluate(gt, map, by_pairs_walls);
-    for (const QualityReport* q : {&r, &r1})
+    const QualityReport r2 = evaluate(gt, map, by_group_walls);
+    for (const QualityReport* q : {&r, &r1, &r2})
         for (const auto& p : q->match.pairs)
             EXPECT_TRUE(truth.count({p.ground_truth, p.map})) << p.ground_truth << " -> " << p.map;
     EXPECT_GE(r.match.pairs.size(), 28u);

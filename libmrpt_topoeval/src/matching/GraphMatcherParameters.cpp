@@ -158,6 +158,10 @@ TOPOEVAL_PARAMETER_TABLE(
          atLeast(0).atMost(1)),
     real(TOPOEVAL_KEY(further_group_disagreeing_pair_share), "0..1",
          "consistent: ... and a further group likewise (0: off)", atLeast(0).atMost(1)),
+    real(TOPOEVAL_KEY(further_group_min_wall_agreement), "0..1",
+         "consistent: a further group whose walls agree on less than this share, under its fit "
+         "and their own alignment, is refused (0: off)",
+         atLeast(0).atMost(1)),
     integer(TOPOEVAL_KEY(max_rival_placements), "count",
             "consistent: rival placements of the first group played out (0: off)",
             atLeast(0).atMost(16)),

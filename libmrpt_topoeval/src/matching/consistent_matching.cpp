@@ -808,6 +808,22 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
             group = std::move(pure);
         return true;
     };
+    // A further group whose walls agree on less than further_group_min_wall_agreement of their
+    // length, under its fit and under their own alignment: its vertices agree, its walls do
+    // not. A hall's lattice of columns repeats under a quarter turn, and its junctions paired a
+    // quarter turn off keep their distances and enough similarity, while the rooms' walls
+    // around them do not agree (fresh corpus seed 26's column_hall_26004/broken_3: 5 pairs,
+    // similarity 0.65, walls 0.16; doc/matching.md, "A further group whose walls disagree").
+    // Never where either map lacks walls around the group.
+    auto wallsDisagreeOutright = [&](const std::vector<int>& group)
+    {
+        if (out.cores.empty() || !(p.further_group_min_wall_agreement > 0.0)) return false;
+        const Transform2D fit = fitOf(group, nullptr);
+        const WallAgreement w = wallsOf(group, fit, 2.0);
+        if (!w.walls_on_both || w.share >= p.further_group_min_wall_agreement) return false;
+        const auto own = ownWallsAlignment(group, fit);
+        return !own || wallsOf(group, *own, 2.0).share < p.further_group_min_wall_agreement;
+    };
     // A further group (a broken map's other part): the best acceptable consensus of the pool.
     // Near a break a clique mixes two parts (within a few metres of the pivot a turn of 10-30
     // degrees keeps distances within tolerance) and ties between such cliques are common; a fit
@@ -870,6 +886,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                 if (!out.cores.empty() && p.further_group_disagreeing_pair_share > 0.0 &&
                     pairWallsDisagree(kept, p.further_group_disagreeing_pair_share))
                     continue;
+                if (wallsDisagreeOutright(kept)) continue;
                 best = std::move(kept), best_err = err_sum;
             }
         return best;
