@@ -1082,8 +1082,9 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         // the clique held another part's pairs too), and the groups are tried in turn until one
         // passes.
         const bool in_turn = p.first_group_maximal_cliques_in_turn;
+        // Never with the small part's wall test off (min_part_wall_agreement = 0).
         if (!ok && !small_graph && p.first_group_from_maximal_cliques && !maximal_cliques_asked &&
-            !(attempt == 0 && first) && (!settled || in_turn))
+            !(attempt == 0 && first) && (!settled || in_turn) && p.min_part_wall_agreement > 0.0)
         {
             maximal_cliques_asked = true;
             bool best = true;
@@ -1099,8 +1100,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                                                         p.first_group_in_turn_min_wall_agreement);
                 best = false;
                 const WallAgreement w = wallsOf(group, fitOf(group, nullptr), min_share);
-                if (p.min_part_wall_agreement > 0.0 && w.share >= min_share &&
-                    w.pinning <= p.max_wall_pinning && firstGroupTests(group))
+                if (w.share >= min_share && w.pinning <= p.max_wall_pinning &&
+                    firstGroupTests(group))
                 {
                     clique = std::move(group);
                     ok = true;
