@@ -1180,14 +1180,21 @@ void expectGroupsAreParts(const QualityReport& r, const std::function<int(int, i
     EXPECT_EQ(found, parts);
 }
 
-// Every pair true (partOf >= 0), at least `min_pairs`, and brokenness one group per part of
-// `parts`, each group of one part.
-void expectOneGroupPerPart(const QualityReport& r, const std::function<int(int, int)>& partOf,
-                           std::size_t min_pairs, const std::set<int>& parts)
+// Every pair true (partOf >= 0), and at least `min_pairs`.
+void expectPairsTrue(const QualityReport& r, const std::function<int(int, int)>& partOf,
+                     std::size_t min_pairs)
 {
     for (const auto& p : r.match.pairs)
         EXPECT_GE(partOf(p.ground_truth, p.map), 0) << p.ground_truth << " -> " << p.map;
     EXPECT_GE(r.match.pairs.size(), min_pairs);
+}
+
+// Every pair true, at least `min_pairs`, and brokenness one group per part of `parts`, each
+// group of one part.
+void expectOneGroupPerPart(const QualityReport& r, const std::function<int(int, int)>& partOf,
+                           std::size_t min_pairs, const std::set<int>& parts)
+{
+    expectPairsTrue(r, partOf, min_pairs);
     expectGroupsAreParts(r, partOf, parts);
 }
 
@@ -1328,9 +1335,7 @@ TEST(ConsistentMatching, ASmallScatteredPartIsFoundWhenSignificant)
     const QualityReport r0 = evaluate(gt, map, without);
     // Every pair true, both breaks found: three groups, part 2's holding its pairs (gt 13, 14,
     // 36) and gt 32, a vertex at the seam of parts 1 and 2 whose pair is true too.
-    for (const auto& p : r.match.pairs)
-        EXPECT_GE(partOf(p.ground_truth, p.map), 0) << p.ground_truth << " -> " << p.map;
-    EXPECT_GE(r.match.pairs.size(), 24u);
+    expectPairsTrue(r, partOf, 24u);
     EXPECT_EQ(r.brokenness.degree, 2);
     ASSERT_EQ(r.brokenness.groups.size(), 3u);
     std::set<int> third(r.brokenness.groups[2].gt_vertices.begin(),
@@ -1519,9 +1524,7 @@ TEST(ConsistentMatching, TheMaximalCliquesAreTriedInTurn)
     // Every pair true, and the four parts are four brokenness groups. Part 0's room at the cut
     // (gt 3, whose dead end part 1's fit places within tolerance too) joins part 1's group: of
     // every group all pairs but at most one are of one part.
-    for (const auto& p : r.match.pairs)
-        EXPECT_GE(partOf(p.ground_truth, p.map), 0) << p.ground_truth << " -> " << p.map;
-    EXPECT_GE(r.match.pairs.size(), 20u);
+    expectPairsTrue(r, partOf, 20u);
     EXPECT_EQ(r.brokenness.degree, 3);
     ASSERT_EQ(r.brokenness.groups.size(), 4u);
     std::set<int> majorities;

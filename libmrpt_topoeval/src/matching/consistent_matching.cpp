@@ -350,10 +350,13 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     };
     const double wall_tolerance =
         std::max(p.wall_tolerance_m, 1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
-    // The small part's wall test (also a grown pair's that only its walls vouch for). A share
-    // is 0 where either map has no walls.
+    // Walls that agree on at least `min_share` of their length and pin the fit
+    // (max_wall_pinning). A share is 0 where either map has no walls.
+    auto agreeOnAndPin = [&](const WallAgreement& w, double min_share)
+    { return w.share >= min_share && w.pinning <= p.max_wall_pinning; };
+    // The small part's wall test (also a grown pair's that only its walls vouch for).
     auto agreeAndPin = [&](const WallAgreement& w)
-    { return w.share >= p.min_part_wall_agreement && w.pinning <= p.max_wall_pinning; };
+    { return agreeOnAndPin(w, p.min_part_wall_agreement); };
     // The agreement of the walls around a group under a fit; their pinning only when the share
     // is at least pinning_from_share (a caller that refuses a smaller share need not pay for it;
     // above 1: never), and only as far as max_wall_pinning, the most any caller accepts.
@@ -705,9 +708,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         // not (on the Intel pair 271 groups asked for them, 232 of them in the later looks;
         // with the pinning too, 70 ms). The pinning only when the share passes.
         if (!significantWhereAsked(group)) return false;
-        auto passes = [&](const WallAgreement& w) {
-            return w.share >= p.min_unlinked_part_wall_agreement && w.pinning <= p.max_wall_pinning;
-        };
+        auto passes = [&](const WallAgreement& w)
+        { return agreeOnAndPin(w, p.min_unlinked_part_wall_agreement); };
         return passes(wallsOfGroup(group, fitOf(group, nullptr), p.min_unlinked_part_wall_agreement,
                                    passes, true)) &&
                acceptable(group);
@@ -1100,8 +1102,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
                                                         p.first_group_in_turn_min_wall_agreement);
                 best = false;
                 const WallAgreement w = wallsOf(group, fitOf(group, nullptr), min_share);
-                if (w.share >= min_share && w.pinning <= p.max_wall_pinning &&
-                    firstGroupTests(group))
+                if (agreeOnAndPin(w, min_share) && firstGroupTests(group))
                 {
                     clique = std::move(group);
                     ok = true;
