@@ -65,6 +65,7 @@ struct Column
     double size_m = 0.5;
     bool round = true;
     Vec axis{1.0, 0.0};
+    double length_m = 0.0;  //!< Along `axis` (square ones); 0: `size_m` (a rack: longer).
 };
 
 Vec perp(const Vec& v) { return {-v.y(), v.x()}; }
@@ -821,6 +822,262 @@ void layoutMultiWing(Plan& p)
     }
 }
 
+/** A rotunda (held out, session 36; never in the standard corpus the matcher was tuned on): a
+ * ring corridor of 10-18 straight pieces round a courtyard or a central hall, rooms along its
+ * outside and, in some, its inside; spokes to the hall; a wing leaving the ring outwards. Its
+ * walls turn by 20-36 degrees at every piece and it is nearly symmetric under rotation, which no
+ * standard style is. */
+void layoutRing(Plan& p)
+{
+    p.drawWall(0.15, 0.3);
+    const double t = p.wall_m;
+    const double cw = p.uni(1.4, 2.8);
+    const int n = p.pick(8, 14);
+    const double radius = p.uni(10.0, 15.0);  // of the corridor's centre line [m]
+    const double a0 = p.uni(0.0, 2.0 * M_PI);
+    const double step = 2.0 * M_PI / n;
+    std::vector<Vec> pts;
+    for (int k = 0; k < n; ++k)
+    {
+        const double a = a0 + step * (k + p.uni(-0.2, 0.2));
+        const double r = radius * p.uni(0.93, 1.07);
+        pts.push_back(r * Vec(std::cos(a), std::sin(a)));
+    }
+    // Half the turn at each corner; pieces are extended to meet on the outside (a mitre).
+    std::vector<double> half_turn(n);
+    for (int k = 0; k < n; ++k)
+    {
+        const Vec u0 = (pts[k] - pts[(k + n - 1) % n]).normalized();
+        const Vec u1 = (pts[(k + 1) % n] - pts[k]).normalized();
+        half_turn[k] = 0.5 * std::acos(std::clamp(u0.dot(u1), -1.0, 1.0));
+    }
+    std::vector<int> ring;
+    for (int k = 0; k < n; ++k)
+    {
+        const int k1 = (k + 1) % n;
+        ring.push_back(p.corridor(pts[k], pts[k1], cw, 0.5 * cw * std::tan(half_turn[k]) + 0.05,
+                                  0.5 * cw * std::tan(half_turn[k1]) + 0.05));
+    }
+    for (int k = 0; k < n; ++k) p.opening(ring[(k + n - 1) % n], ring[k], pts[k]);
+    // The inside: a hall reached by one or two spokes (else a courtyard, left unknown).
+    const bool hall = p.chance(0.55);
+    std::vector<int> spoke_pieces;
+    double hall_r = 0.0;
+    if (hall)
+    {
+        hall_r = p.uni(3.0, std::min(6.0, radius - 0.5 * cw - 5.0));
+        const int m = p.pick(6, 10);
+        Poly poly;
+        const double b0 = p.uni(0.0, 2.0 * M_PI);
+        for (int i = 0; i < m; ++i)
+        {
+            const double b = b0 + 2.0 * M_PI * i / m;
+            poly.push_back(hall_r * Vec(std::cos(b), std::sin(b)));
+        }
+        std::vector<Vec> visits = {Vec(0, 0)};
+        const int h = p.add(poly, Kind::Hall, Vec(1, 0), visits);
+        const int ns = p.chance(0.5) ? 2 : 1;
+        const int k0 = p.pick(0, n - 1);
+        for (int i = 0; i < ns; ++i)
+        {
+            const int k = (k0 + i * (n / 2 + p.pick(-1, 1))) % n;
+            const Vec mid = 0.5 * (pts[k] + pts[(k + 1) % n]);
+            const Vec u = mid.normalized();
+            const double sw = p.uni(1.2, 2.2);
+            const Vec a = (hall_r * std::cos(M_PI / m) - 0.3) * u;
+            const int s = p.corridor(a, mid, sw, 0.0, 0.0);
+            p.spaces[s].visits.clear();
+            p.opening(h, s, a);
+            p.opening(ring[k], s, mid);
+            spoke_pieces.push_back(k);
+        }
+    }
+    // A wing leaving the ring outwards: a corridor with rooms on both sides.
+    RowSpec row;
+    row.w_min = 2.6;
+    row.w_max = 6.0;
+    row.d_min = 3.0;
+    row.d_max = 7.0;
+    row.slant = 0.35;
+    row.back_skew_m = 1.0;
+    row.door_min = 0.8;
+    row.door_max = 1.6;
+    row.inner_door_p = 0.3;
+    row.min_room_depth = 2.6;
+    std::vector<RowSpec> rows;
+    if (p.chance(0.6))
+    {
+        const int k = p.pick(0, n - 1);
+        const Vec mid = 0.5 * (pts[k] + pts[(k + 1) % n]);
+        const Vec u = mid.normalized();
+        const double ww = p.uni(1.3, 2.4), wl = p.uni(8.0, 14.0);
+        const Vec end = mid + wl * u;
+        const int w = p.corridor(mid, end, ww, 0.0, 0.0);
+        p.spaces[w].visits.erase(p.spaces[w].visits.begin());
+        p.opening(ring[k], w, mid);
+        for (double side : {1.0, -1.0})
+        {
+            RowSpec r = row;
+            r.parent = w;
+            r.u = u;
+            r.n = side * perp(u);
+            r.origin = mid + (0.5 * ww + t) * r.n;
+            r.s0 = 0.5 * cw + t + 1.0;
+            r.s1 = wl;
+            rows.push_back(r);
+        }
+    }
+    for (int k = 0; k < n; ++k)
+    {
+        const int k1 = (k + 1) % n;
+        const Vec a = pts[k], b = pts[k1];
+        const Vec u = (b - a).normalized();
+        const Vec out = perp(u).dot(0.5 * (a + b)) > 0.0 ? perp(u) : Vec(-perp(u));
+        RowSpec r = row;
+        r.parent = ring[k];
+        r.u = u;
+        r.n = out;
+        r.origin = a + (0.5 * cw + t) * out;
+        r.s0 = 0.1;
+        r.s1 = (b - a).norm() - 0.1;
+        rows.push_back(r);
+        const bool spoke =
+            std::find(spoke_pieces.begin(), spoke_pieces.end(), k) != spoke_pieces.end();
+        if (!spoke && p.chance(hall ? 0.7 : 0.5))
+        {
+            // Inside, neighbouring rows converge: each keeps clear of the corners' bisectors.
+            r.n = -out;
+            r.origin = a + (0.5 * cw + t) * r.n;
+            r.d_max = std::min(5.0, radius - 0.5 * cw - 2.0 * t - (hall ? hall_r + 0.5 : 2.0));
+            r.d_min = std::min(r.d_min, r.d_max);
+            r.slant = 0.0;
+            const double reach = 0.5 * cw + t + r.d_max;
+            r.s0 = reach * std::tan(half_turn[k]) + 0.6 * t;
+            r.s1 = (b - a).norm() - reach * std::tan(half_turn[k1]) - 0.6 * t;
+            rows.push_back(r);
+        }
+    }
+    for (const RowSpec& r : rows) addRow(p, r);
+}
+
+/** A warehouse (held out, session 36): a hall of parallel racks (long thin obstacles, 0.8-1.4 m
+ * deep) in rows split by one or two cross aisles, a dock area of pallets along the front, and
+ * offices along a side. Its aisles repeat at one spacing, a lattice no standard style has but
+ * the column hall's columns. */
+void layoutWarehouse(Plan& p)
+{
+    p.drawWall(0.2, 0.35);
+    const double t = p.wall_m;
+    const double hw = p.uni(26.0, 44.0), hh = p.uni(20.0, 32.0);
+    const double dock = p.uni(4.0, 7.0);  // open band along the front (y = 0) [m]
+    const double depth = p.uni(0.8, 1.4), aisle = p.uni(2.2, 3.4);
+    const double back = p.uni(1.8, 3.5);  // aisle along the back wall [m]
+    const double west = p.uni(2.5, 4.5), east = p.uni(2.5, 4.5);
+    // Cross aisles split every rack row into segments.
+    const int ncross = p.pick(0, 2);
+    std::vector<double> cuts = {west};
+    for (int i = 1; i <= ncross; ++i)
+    {
+        const double c = west + (hw - west - east) * i / (ncross + 1) + p.uni(-2.0, 2.0);
+        const double w = p.uni(2.5, 4.0);
+        cuts.push_back(c - 0.5 * w);
+        cuts.push_back(c + 0.5 * w);
+    }
+    cuts.push_back(hw - east);
+    std::vector<Vec> visits = {Vec(0.5 * hw, 0.5 * dock)};
+    const bool round = p.chance(0.4);
+    for (double y = dock; y + depth <= hh - back; y += depth + aisle)
+    {
+        // Every row's segments; a segment now and then missing (an open floor area) or short.
+        for (std::size_t k = 0; k + 1 < cuts.size(); k += 2)
+        {
+            const double x0 = cuts[k], x1 = cuts[k + 1];
+            if (x1 - x0 < 4.0 || p.chance(0.08)) continue;
+            const double a = x0 + (p.chance(0.2) ? p.uni(0.0, 0.3) * (x1 - x0) : 0.0);
+            Column c;
+            c.c = Vec(0.5 * (a + x1), y + 0.5 * depth);
+            c.size_m = depth;
+            c.length_m = x1 - a;
+            c.round = false;
+            p.columns.push_back(c);
+        }
+        // The aisle above the row: points along each of its segments, every 15 m at most, so
+        // that the tour drives the aisles as a robot mapping a warehouse does (from their ends
+        // a 10 m laser leaves their middles unknown).
+        const double ya = y + depth + 0.5 * aisle;
+        if (ya < hh - 0.5)
+            for (std::size_t k = 0; k + 1 < cuts.size(); k += 2)
+            {
+                const double x0 = cuts[k], x1 = cuts[k + 1];
+                const int m = std::max(1, static_cast<int>(std::ceil((x1 - x0) / 15.0)));
+                for (int i = 0; i < m; ++i)
+                    visits.push_back(Vec(x0 + (x1 - x0) * (i + 0.5) / m, ya));
+            }
+    }
+    // Pallets in the dock area.
+    for (double x = p.uni(2.0, 5.0); x < hw - 2.0; x += p.uni(3.0, 7.0))
+        if (p.chance(0.35))
+        {
+            Column c;
+            c.c = Vec(x, p.uni(1.2, std::max(1.3, dock - 1.4)));
+            c.size_m = p.uni(0.8, 1.2);
+            c.round = round && p.chance(0.3);
+            p.columns.push_back(c);
+        }
+    const int h =
+        p.add(rect(Vec(0, 0), Vec(1, 0), Vec(0, 1), 0, hw, 0, hh), Kind::Hall, Vec(1, 0), visits);
+    // Offices: a row of rooms along the west or east wall, or along the front.
+    RowSpec r;
+    r.parent = h;
+    r.w_min = 2.8;
+    r.w_max = 6.0;
+    r.d_min = 3.0;
+    r.d_max = 6.0;
+    r.door_min = 0.8;
+    r.door_max = 1.4;
+    r.inner_door_p = 0.35;
+    const int side = p.pick(0, 2);
+    if (side == 0)
+    {
+        r.origin = Vec(-t, 0);
+        r.u = Vec(0, 1);
+        r.n = Vec(-1, 0);
+        r.s0 = p.uni(0.0, 0.4) * hh;
+        r.s1 = hh;
+    }
+    else if (side == 1)
+    {
+        r.origin = Vec(hw + t, 0);
+        r.u = Vec(0, 1);
+        r.n = Vec(1, 0);
+        r.s0 = 0.0;
+        r.s1 = hh - p.uni(0.0, 0.4) * hh;
+    }
+    else
+    {
+        r.origin = Vec(0, -t);
+        r.n = Vec(0, -1);
+        r.s0 = p.uni(0.0, 0.3) * hw;
+        r.s1 = r.s0 + p.uni(0.4, 0.7) * hw;
+    }
+    addRow(p, r);
+    // Sometimes a second, smaller hall (a cold store) through a wide door in the back wall.
+    if (p.chance(0.4))
+    {
+        const double sw = p.uni(8.0, 14.0), sh = p.uni(6.0, 10.0);
+        const double sx = p.uni(0.0, hw - sw);
+        const Poly poly = rect(Vec(sx, hh + t), Vec(1, 0), Vec(0, 1), 0, sw, 0, sh);
+        if (p.fits(poly))
+        {
+            const Vec c = centroid(ccw(poly));
+            const int s = p.add(poly, Kind::Hall, Vec(1, 0), {c});
+            const double dw = p.uni(2.0, 3.5);
+            const double dx = p.uni(sx + 0.5 * dw + 0.5, sx + sw - 0.5 * dw - 0.5);
+            p.door(h, s, Vec(dx, hh + 0.5 * t), Vec(0, 1), dw);
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Rasterisation and checks
 // ---------------------------------------------------------------------------------------------
@@ -927,9 +1184,12 @@ Raster rasterise(const Plan& plan, const mrpt::maps::COccupancyGridMap2D& grid)
             r.fillConvex(circle, 255, col_img);
         }
         else
-            r.fillConvex(rect(c.c, c.axis, perp(c.axis), -0.5 * c.size_m, 0.5 * c.size_m,
-                              -0.5 * c.size_m, 0.5 * c.size_m),
+        {
+            const double len = c.length_m > 0.0 ? c.length_m : c.size_m;
+            r.fillConvex(rect(c.c, c.axis, perp(c.axis), -0.5 * len, 0.5 * len, -0.5 * c.size_m,
+                              0.5 * c.size_m),
                          255, col_img);
+        }
     }
     const int rad = std::max(2, static_cast<int>(std::lround(plan.wall_m / r.res)));
     cv::Mat free_m(r.ny, r.nx, CV_8U, free_img.data()), wall_m;
@@ -1415,7 +1675,8 @@ bool attempt(Layout layout, std::mt19937& rng, double res, Building& out, PlanSt
 Building makeBuildingImpl(const std::string& style, std::uint32_t seed, double resolution_m,
                           PlanStats* stats)
 {
-    const std::vector<std::string> styles = buildingStyles();
+    std::vector<std::string> styles = buildingStyles();
+    for (const std::string& h : heldOutStyles()) styles.push_back(h);
     const auto it = std::find(styles.begin(), styles.end(), style);
     if (it == styles.end())
         throw std::invalid_argument("makeBuilding: unknown style '" + style + "'");
@@ -1424,7 +1685,7 @@ Building makeBuildingImpl(const std::string& style, std::uint32_t seed, double r
                                     " outside [0.01, 0.2]");
     const std::size_t index = static_cast<std::size_t>(it - styles.begin());
     const Layout layouts[] = {layoutCorridorOffice, layoutColumnHall, layoutAngled,
-                              layoutMultiWing};
+                              layoutMultiWing,      layoutRing,       layoutWarehouse};
     std::seed_seq seq{static_cast<std::uint32_t>(index), seed, 0x7b1du};
     std::mt19937 rng(seq);
     Building b;
@@ -1445,6 +1706,8 @@ std::vector<std::string> buildingStyles()
 {
     return {"corridor_office", "column_hall", "angled", "multi_wing"};
 }
+
+std::vector<std::string> heldOutStyles() { return {"ring", "warehouse"}; }
 
 Building makeBuilding(const std::string& style, std::uint32_t seed, double resolution_m)
 {

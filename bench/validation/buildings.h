@@ -17,7 +17,7 @@ namespace mrpt_topoeval::validation
 struct Building
 {
     std::string name;   //!< "<style>_<seed>", e.g. "corridor_office_3".
-    std::string style;  //!< One of buildingStyles().
+    std::string style;  //!< One of buildingStyles() or heldOutStyles().
     std::uint32_t seed = 0;
     mrpt::maps::COccupancyGridMap2D grid;
     /** Waypoints of a tour that enters every room and hall [m, world frame]: consecutive
@@ -29,7 +29,14 @@ struct Building
 /** The styles, in a fixed order: "corridor_office", "column_hall", "angled", "multi_wing". */
 std::vector<std::string> buildingStyles();
 
-/** Builds one building of `style` from `seed` at `resolution_m`. Same inputs, same grid (bit
+/** Styles held out of the standard corpus (`topoeval_validate --styles`): "ring" (a rotunda),
+ * "warehouse" (rack aisles).
+ * The matcher was never tuned on them, so they measure how it generalises to a building type it
+ * has not seen (doc/validation.md, "Session 36"). */
+std::vector<std::string> heldOutStyles();
+
+/** Builds one building of `style` (buildingStyles() or heldOutStyles()) from `seed` at
+ * `resolution_m`. Same inputs, same grid (bit
  * for bit). \throws std::invalid_argument on an unknown style. */
 Building makeBuilding(const std::string& style, std::uint32_t seed, double resolution_m = 0.05);
 }  // namespace mrpt_topoeval::validation

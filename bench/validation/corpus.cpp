@@ -88,11 +88,19 @@ Corpus buildCorpus(const CorpusOptions& opts)
     corpus.chained_breaks = opts.chained_breaks;
     if (opts.chained_breaks)
         corpus.notes.push_back("broken maps: parts turned in a chain (--chained-breaks)");
-    // Generated buildings: every style with four seeds (quick: two styles, one seed each).
-    const auto styles = buildingStyles();
+    // Generated buildings: every style with four seeds (quick: two standard styles, one seed
+    // each).
+    const auto standard = buildingStyles();
+    const auto styles = opts.styles.empty() ? standard : opts.styles;
+    if (!opts.styles.empty())
+    {
+        std::string list;
+        for (const auto& style : styles) list += (list.empty() ? "" : ", ") + style;
+        corpus.notes.push_back("building styles: " + list + " (--styles)");
+    }
     std::vector<std::pair<std::string, std::uint32_t>> wanted;
     if (opts.quick)
-        wanted = {{styles[0], opts.seed * 1000 + 1}, {styles[2], opts.seed * 1000 + 1}};
+        wanted = {{standard[0], opts.seed * 1000 + 1}, {standard[2], opts.seed * 1000 + 1}};
     else
         for (const auto& style : styles)
             for (std::uint32_t k = 1; k <= 4; ++k) wanted.emplace_back(style, opts.seed * 1000 + k);

@@ -52,6 +52,9 @@ struct CorpusOptions
     std::string only;        //!< Case ids must contain it (real pairs made at run time).
     /** Broken maps' parts turned in a chain, each against the previous one (makeBroken()). */
     bool chained_breaks = false;
+    /** Building styles to generate (buildingStyles() and heldOutStyles()); empty = the
+     * standard corpus's buildingStyles(). */
+    std::vector<std::string> styles;
 };
 
 struct Corpus

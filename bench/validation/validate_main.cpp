@@ -22,6 +22,7 @@
 #include <sstream>
 #include <thread>
 
+#include "buildings.h"
 #include "corpus.h"
 #include "scoring.h"
 #include "summary.h"
@@ -35,7 +36,8 @@ namespace
 const char* kUsage =
     "usage: topoeval_validate [--quick] [--out DIR] [--seed N] [--threads N] [--data DIR]\n"
     "                         [--no-real] [--ini FILE] [--pictures N] [--floors FILE]\n"
-    "                         [--only TEXT] [--draw-ground-truths] [--chained-breaks] [--force]\n"
+    "                         [--only TEXT] [--styles LIST] [--draw-ground-truths]\n"
+    "                         [--chained-breaks] [--force]\n"
     "  --quick        the CI subset (~40 cases)\n"
     "  --out DIR      where cases.csv, cases.json, summary.txt, pictures/ go\n"
     "                 (default topoeval-out/validation; an existing cases.csv needs --force)\n"
@@ -48,6 +50,9 @@ const char* kUsage =
     "  --floors FILE  minimum figures; exit 3 when one is not met "
     "(bench/validation/quick_floors.txt)\n"
     "  --only TEXT    only cases whose id contains TEXT\n"
+    "  --styles LIST  generated building styles, comma-separated (default: corridor_office,\n"
+    "                 column_hall, angled, multi_wing; held out of that default: ring,\n"
+    "                 warehouse)\n"
     "  --draw-ground-truths  draw every ground truth's graph into pictures/gt_NAME.png\n"
     "  --chained-breaks  broken maps' parts turned in a chain, each against the previous part\n"
     "                 about a point of their common border (a SLAM map's breaks); default: each\n"
@@ -64,6 +69,28 @@ struct Options
     bool draw_ground_truths = false;
     bool force = false;
 };
+
+/** "a,b" -> {"a", "b"}, each a style of buildingStyles() or heldOutStyles(). */
+std::vector<std::string> styleList(const std::string& text)
+{
+    std::vector<std::string> known = buildingStyles();
+    for (const std::string& h : heldOutStyles()) known.push_back(h);
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    for (std::string item; std::getline(ss, item, ',');)
+    {
+        if (std::find(known.begin(), known.end(), item) == known.end())
+        {
+            std::string list;
+            for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+            throw InputError("--styles '" + text + "': unknown style '" + item +
+                             "' (known: " + list + ")");
+        }
+        if (std::find(out.begin(), out.end(), item) == out.end()) out.push_back(item);
+    }
+    if (out.empty()) throw InputError("--styles '" + text + "': no style given");
+    return out;
+}
 
 Options parse(int argc, char** argv)
 {
@@ -108,6 +135,8 @@ Options parse(int argc, char** argv)
             o.floors = need(i);
         else if (a == "--only")
             o.only = o.corpus.only = need(i);
+        else if (a == "--styles")
+            o.corpus.styles = styleList(need(i));
         else if (a == "--force")
             o.force = true;
         else if (a == "--draw-ground-truths")
