@@ -174,6 +174,9 @@ struct Plan
     std::mt19937* rng = nullptr;
     double res = 0.05;
     double wall_m = 0.2;
+    /** The building's extent [m]: its longer side in [min_extent_m, max_extent_m], its shorter
+     * side at least min_width_m (a layout of another size is drawn again). */
+    double min_extent_m = 25.0, max_extent_m = 59.0, min_width_m = 18.0;
     std::vector<Space> spaces;
     std::vector<Portal> portals;
     std::vector<Column> columns;
@@ -1078,6 +1081,86 @@ void layoutWarehouse(Plan& p)
     }
 }
 
+/** A house (held out, session 36): a hallway 0.9-1.4 m wide, straight or with a bend, lined
+ * with bedrooms, a bathroom and closets, a living room at one end through a wide opening, now
+ * and then a kitchen beside it. 10-25 m across: the small graphs (10-30 vertices) of a home
+ * robot's map, which the standard styles (25-59 m) never draw. */
+void layoutHouse(Plan& p)
+{
+    p.drawWall(0.1, 0.2);
+    const double t = p.wall_m;
+    p.min_extent_m = 10.0;
+    p.max_extent_m = 25.0;
+    p.min_width_m = 7.0;
+    const double hw = p.uni(0.9, 1.4);
+    const double len = p.uni(6.0, 12.0);
+    const int hall = p.corridor(Vec(0, 0), Vec(len, 0), hw, 0.0, 0.0);
+    RowSpec row;
+    row.w_min = 1.8;
+    row.w_max = 4.5;
+    row.d_min = 2.2;
+    row.d_max = 4.5;
+    row.door_min = 0.7;
+    row.door_max = 0.9;
+    row.inner_door_p = 0.15;
+    row.min_room_depth = 2.0;
+    std::vector<RowSpec> rows;
+    for (double side : {1.0, -1.0})
+    {
+        RowSpec r = row;
+        r.parent = hall;
+        r.n = Vec(0, side);
+        r.origin = Vec(0, side * (0.5 * hw + t));
+        r.s0 = p.chance(0.4) ? p.uni(0.5, 2.0) : 0.0;
+        r.s1 = len;
+        rows.push_back(r);
+    }
+    // A bend: a second hallway leaving the far end at a right angle, rooms on its outer side.
+    if (p.chance(0.4))
+    {
+        const double side = p.chance(0.5) ? 1.0 : -1.0;
+        const double len2 = p.uni(4.0, 7.0);
+        const Vec a(len - 0.5 * hw, 0.0), b(len - 0.5 * hw, side * (0.5 * hw + len2));
+        const int h2 = p.corridor(a, b, hw, 0.0, 0.0);
+        p.spaces[h2].visits.erase(p.spaces[h2].visits.begin());
+        p.opening(hall, h2, a);
+        RowSpec r = row;
+        r.parent = h2;
+        r.u = Vec(0, side);
+        r.n = Vec(1, 0);
+        r.origin = Vec(len + t, 0.0);
+        r.s0 = 0.5 * hw + t + 0.2;
+        r.s1 = 0.5 * hw + len2;
+        rows.push_back(r);
+    }
+    // The living room at the hallway's near end, through a wide opening; a kitchen beside it.
+    const double lw = p.uni(4.0, 7.0), lh = p.uni(4.0, 7.5);
+    const double y0 = -p.uni(0.3, 0.7) * lh;
+    const Poly living = rect(Vec(-t - lw, y0), Vec(1, 0), Vec(0, 1), 0.0, lw, 0.0, lh);
+    const Vec lc = centroid(ccw(living));
+    const int lr = p.add(living, Kind::Hall, Vec(1, 0), {lc});
+    const double ow = std::min(p.uni(1.2, 2.4), hw + 1.0);
+    p.door(hall, lr, Vec(-0.5 * t, 0.0), Vec(-1, 0), std::min(ow, hw));
+    if (p.chance(0.6))
+    {
+        const double kw = p.uni(2.5, 4.0);
+        const double side = p.chance(0.5) ? 1.0 : -1.0;
+        const double ky0 = side > 0 ? y0 + lh + t : y0 - t - kw;
+        const Poly kitchen =
+            rect(Vec(-t - lw, ky0), Vec(1, 0), Vec(0, 1), 0.0, p.uni(3.0, lw), 0.0, kw);
+        if (p.fits(kitchen))
+        {
+            const int k = p.add(kitchen, Kind::Room, Vec(1, 0));
+            const double dw = p.uni(0.8, 1.6);
+            p.door(lr, k,
+                   Vec(-t - lw + p.uni(0.5 + 0.5 * dw, 2.5),
+                       side > 0 ? y0 + lh + 0.5 * t : y0 - 0.5 * t),
+                   Vec(0, side), dw);
+        }
+    }
+    for (const RowSpec& r : rows) addRow(p, r);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Rasterisation and checks
 // ---------------------------------------------------------------------------------------------
@@ -1635,7 +1718,9 @@ bool attempt(Layout layout, std::mt19937& rng, double res, Building& out, PlanSt
             ymax = std::max(ymax, v.y());
         }
     const double w = xmax - xmin, h = ymax - ymin;
-    if (std::max(w, h) > 59.0 || std::max(w, h) < 25.0 || std::min(w, h) < 18.0) return false;
+    if (std::max(w, h) > plan.max_extent_m || std::max(w, h) < plan.min_extent_m ||
+        std::min(w, h) < plan.min_width_m)
+        return false;
     const double margin = plan.wall_m + 1.0;
     const double gx0 = res * std::floor((xmin - margin) / res);
     const double gy0 = res * std::floor((ymin - margin) / res);
@@ -1684,8 +1769,10 @@ Building makeBuildingImpl(const std::string& style, std::uint32_t seed, double r
         throw std::invalid_argument("makeBuilding: resolution_m = " + std::to_string(resolution_m) +
                                     " outside [0.01, 0.2]");
     const std::size_t index = static_cast<std::size_t>(it - styles.begin());
-    const Layout layouts[] = {layoutCorridorOffice, layoutColumnHall, layoutAngled,
-                              layoutMultiWing,      layoutRing,       layoutWarehouse};
+    const Layout layouts[] = {layoutCorridorOffice, layoutColumnHall, layoutAngled, layoutMultiWing,
+                              layoutRing,           layoutWarehouse,  layoutHouse};
+    if (index >= std::size(layouts))
+        throw std::logic_error("makeBuilding: no layout for style '" + style + "'");
     std::seed_seq seq{static_cast<std::uint32_t>(index), seed, 0x7b1du};
     std::mt19937 rng(seq);
     Building b;
@@ -1707,7 +1794,7 @@ std::vector<std::string> buildingStyles()
     return {"corridor_office", "column_hall", "angled", "multi_wing"};
 }
 
-std::vector<std::string> heldOutStyles() { return {"ring", "warehouse"}; }
+std::vector<std::string> heldOutStyles() { return {"ring", "warehouse", "house"}; }
 
 Building makeBuilding(const std::string& style, std::uint32_t seed, double resolution_m)
 {

@@ -30,7 +30,7 @@ struct Building
 std::vector<std::string> buildingStyles();
 
 /** Styles held out of the standard corpus (`topoeval_validate --styles`): "ring" (a rotunda),
- * "warehouse" (rack aisles).
+ * "warehouse" (rack aisles), "house" (a home of 10-25 m).
  * The matcher was never tuned on them, so they measure how it generalises to a building type it
  * has not seen (doc/validation.md, "Session 36"). */
 std::vector<std::string> heldOutStyles();

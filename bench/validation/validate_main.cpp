@@ -52,7 +52,7 @@ const char* kUsage =
     "  --only TEXT    only cases whose id contains TEXT\n"
     "  --styles LIST  generated building styles, comma-separated (default: corridor_office,\n"
     "                 column_hall, angled, multi_wing; held out of that default: ring,\n"
-    "                 warehouse)\n"
+    "                 warehouse, house)\n"
     "  --draw-ground-truths  draw every ground truth's graph into pictures/gt_NAME.png\n"
     "  --chained-breaks  broken maps' parts turned in a chain, each against the previous part\n"
     "                 about a point of their common border (a SLAM map's breaks); default: each\n"
