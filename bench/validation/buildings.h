@@ -30,13 +30,13 @@ struct Building
 std::vector<std::string> buildingStyles();
 
 /** Styles held out of the standard corpus (`topoeval_validate --styles`): "ring" (a rotunda),
- * "warehouse" (rack aisles), "house" (a home of 10-25 m).
- * The matcher was never tuned on them, so they measure how it generalises to a building type it
- * has not seen (doc/validation.md, "Session 36"). */
+ * "warehouse" (rack aisles), "house" (a home of 10-25 m). The matcher was never tuned on them,
+ * so they measure how it generalises to a building type it has not seen (doc/validation.md,
+ * "Session 36"). */
 std::vector<std::string> heldOutStyles();
 
 /** Builds one building of `style` (buildingStyles() or heldOutStyles()) from `seed` at
- * `resolution_m`. Same inputs, same grid (bit
- * for bit). \throws std::invalid_argument on an unknown style. */
+ * `resolution_m`. Same inputs, same grid (bit for bit). \throws std::invalid_argument on an
+ * unknown style. */
 Building makeBuilding(const std::string& style, std::uint32_t seed, double resolution_m = 0.05);
 }  // namespace mrpt_topoeval::validation
