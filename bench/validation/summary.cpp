@@ -219,6 +219,7 @@ Summary summarize(const std::vector<CaseResult>& results)
 {
     Summary s;
     std::vector<const CaseResult*> pooled, pooled_gen, real;
+    std::map<std::string, std::vector<const CaseResult*>> by_family;
     for (const auto& kind : kindOrder())
     {
         std::vector<const CaseResult*> of_kind;
@@ -239,9 +240,11 @@ Summary summarize(const std::vector<CaseResult>& results)
         if (otherBuilding(r.spec.kind)) continue;
         pooled.push_back(&r);
         if (r.spec.source == "generated") pooled_gen.push_back(&r);
+        by_family[r.spec.family].push_back(&r);
     }
     s.pooled = aggregate("pooled", pooled);
     s.pooled_generated = aggregate("pooled generated", pooled_gen);
+    for (const auto& [family, cases] : by_family) s.families.push_back(aggregate(family, cases));
     s.real = aggregate("real pairs", real);
     // Spearman per family and ladder, pooled over the family's buildings and within each.
     // Points of each building's ladder; the pooled ladder is their union (ranks do not depend on
@@ -338,6 +341,15 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
     for (const auto& a : s.kinds) row(a);
     row(s.pooled_generated);
     row(s.pooled);
+    // The pooled rows again, per building family (every kind but other buildings).
+    o << "\nfamily             cases  err truth_min matched   true  prec recall broken rot_err"
+         "  cov  covmax quality  time_ms\n";
+    for (const auto& a : s.families) row(a);
+    o << "broken, by the truth alone, per family:";
+    for (const auto& a : s.families)
+        if (a.broken)
+            o << " " << a.name << " " << a.broken_kept_exact << " of " << a.broken_kept << ";";
+    o << "\n";
     o << "\nfamily             ladder  points  spearman(severity, quality)  per building (mean "
          "of)  inversions (less complete, within a cell)  ties\n";
     for (const auto& f : s.ladders)
@@ -443,6 +455,20 @@ std::vector<std::string> checkFloors(const Summary& s, const std::string& text,
         if (which == "real") a = &s.real;
         for (const auto& k : s.kinds)
             if (k.name == which) a = &k;
+        // "family:NAME": one building family's pooled row; a family the run lacks fails.
+        const std::string family_prefix = "family:";
+        if (which.rfind(family_prefix, 0) == 0)
+        {
+            const std::string family = which.substr(family_prefix.size());
+            for (const auto& f : s.families)
+                if (f.name == family) a = &f;
+            if (!a)
+            {
+                failures.push_back("no case of family '" + family + "' was run (" + file + ":" +
+                                   std::to_string(line_no) + ")");
+                continue;
+            }
+        }
         const auto& kinds = kindOrder();
         if (!a && std::find(kinds.begin(), kinds.end(), which) == kinds.end())
             throw std::invalid_argument(file + ":" + std::to_string(line_no) +

@@ -132,6 +132,9 @@ struct Summary
     std::vector<Aggregate> kinds;  //!< Corpus cases (not real pairs), per kind.
     Aggregate pooled;              //!< Every corpus case but other buildings (different, twin).
     Aggregate pooled_generated;    //!< ... of generated buildings only.
+    /** ... per building family (a generated style, or a real set such as radish), in name
+     * order: how each style of buildings fares, the held-out styles among them. */
+    std::vector<Aggregate> families;
     std::vector<FamilyLadder> ladders;  //!< Per family and ladder.
     Aggregate real;                     //!< The real pairs, pooled.
     std::size_t truth_failures = 0;     //!< Corpus cases under 95 % in the truth check.
@@ -143,7 +146,8 @@ Summary summarize(const std::vector<CaseResult>& results);
 std::string formatSummary(const Summary& s, const std::vector<CaseResult>& results);
 
 /** Checks `floors_text` (lines "<metric> <aggregate> <minimum>", '#' comments; metrics:
- * precision, recall, brokenness_exact, truth_min; aggregates: a kind, "pooled" or "real") against
+ * precision, recall, brokenness_exact, truth_min; aggregates: a kind, "pooled", "real" or
+ * "family:NAME", which fails when the run has no case of that family) against
  * the summary. Returns the failures, one line each; throws std::invalid_argument on a bad line. */
 std::vector<std::string> checkFloors(const Summary& s, const std::string& floors_text,
                                      const std::string& floors_file);
