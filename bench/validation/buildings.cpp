@@ -826,10 +826,10 @@ void layoutMultiWing(Plan& p)
 }
 
 /** A rotunda (held out, session 36; never in the standard corpus the matcher was tuned on): a
- * ring corridor of 10-18 straight pieces round a courtyard or a central hall, rooms along its
- * outside and, in some, its inside; spokes to the hall; a wing leaving the ring outwards. Its
- * walls turn by 20-36 degrees at every piece and it is nearly symmetric under rotation, which no
- * standard style is. */
+ * ring corridor of 8-14 straight pieces round a courtyard or a central hall, rooms along its
+ * outside and, on some pieces, its inside; spokes to the hall; a wing leaving the ring outwards.
+ * Its walls turn by about 20-55 degrees at every piece and it is nearly symmetric under
+ * rotation, which no standard style is. */
 void layoutRing(Plan& p)
 {
     p.drawWall(0.15, 0.3);
