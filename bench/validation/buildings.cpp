@@ -2,6 +2,7 @@
 #include "buildings.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -341,6 +342,26 @@ int addRow(Plan& plan, const RowSpec& r)
         a_l = a_r + t * std::sqrt(1.0 + k_r * k_r);
     }
     return placed;
+}
+
+/** The two rows of rooms along a corridor `width_m` wide that starts at `a` and runs `length_m`
+ * along the unit vector `u`: `row` on its left side, then on its right, each front line a wall
+ * `wall_m` off the corridor's side, from a to its end. */
+std::array<RowSpec, 2> rowsOnBothSides(const RowSpec& row, int parent, const Vec& a, const Vec& u,
+                                       double length_m, double width_m, double wall_m)
+{
+    std::array<RowSpec, 2> rows{row, row};
+    for (std::size_t k = 0; k < rows.size(); ++k)
+    {
+        RowSpec& r = rows[k];
+        r.parent = parent;
+        r.u = u;
+        r.n = (k == 0 ? 1.0 : -1.0) * perp(u);
+        r.origin = a + (0.5 * width_m + wall_m) * r.n;
+        r.s0 = 0.0;
+        r.s1 = length_m;
+    }
+    return rows;
 }
 
 /** Columns in rows at irregular spacing inside the axis-aligned box [x0,x1] x [y0,y1]. */
@@ -685,18 +706,9 @@ void layoutAngled(Plan& p)
     row.min_room_depth = 2.6;
     auto rowsAlong = [&](int parent, const Vec& a, const Vec& b, double w)
     {
-        const Vec u = (b - a).normalized();
-        for (double side : {1.0, -1.0})
-        {
-            RowSpec r = row;
-            r.parent = parent;
-            r.u = u;
-            r.n = side * perp(u);
-            r.origin = a + (0.5 * w + t) * r.n;
-            r.s0 = 0.0;
-            r.s1 = (b - a).norm();
+        for (const RowSpec& r :
+             rowsOnBothSides(row, parent, a, (b - a).normalized(), (b - a).norm(), w, t))
             addRow(p, r);
-        }
     };
     rowsAlong(wing, q, wend, wcw);
     for (int i = 0; i < nseg; ++i) rowsAlong(segs[i], pts[i], pts[i + 1], cw);
@@ -720,16 +732,9 @@ void layoutMultiWing(Plan& p)
     std::vector<RowSpec> rows;
     auto wingRows = [&](int parent, const Vec& a, const Vec& b, double w, double d_max)
     {
-        const Vec u = (b - a).normalized();
-        for (double side : {1.0, -1.0})
+        for (RowSpec r :
+             rowsOnBothSides(row, parent, a, (b - a).normalized(), (b - a).norm(), w, t))
         {
-            RowSpec r = row;
-            r.parent = parent;
-            r.u = u;
-            r.n = side * perp(u);
-            r.origin = a + (0.5 * w + t) * r.n;
-            r.s0 = 0.0;
-            r.s1 = (b - a).norm();
             r.d_max = d_max;
             rows.push_back(r);
         }
@@ -918,15 +923,9 @@ void layoutRing(Plan& p)
         const int w = p.corridor(mid, end, ww, 0.0, 0.0);
         p.spaces[w].visits.erase(p.spaces[w].visits.begin());
         p.opening(ring[k], w, mid);
-        for (double side : {1.0, -1.0})
+        for (RowSpec r : rowsOnBothSides(row, w, mid, u, wl, ww, t))
         {
-            RowSpec r = row;
-            r.parent = w;
-            r.u = u;
-            r.n = side * perp(u);
-            r.origin = mid + (0.5 * ww + t) * r.n;
             r.s0 = 0.5 * cw + t + 1.0;
-            r.s1 = wl;
             rows.push_back(r);
         }
     }
@@ -1105,14 +1104,9 @@ void layoutHouse(Plan& p)
     row.inner_door_p = 0.15;
     row.min_room_depth = 2.0;
     std::vector<RowSpec> rows;
-    for (double side : {1.0, -1.0})
+    for (RowSpec r : rowsOnBothSides(row, hall, Vec(0, 0), Vec(1, 0), len, hw, t))
     {
-        RowSpec r = row;
-        r.parent = hall;
-        r.n = Vec(0, side);
-        r.origin = Vec(0, side * (0.5 * hw + t));
         r.s0 = p.chance(0.4) ? p.uni(0.5, 2.0) : 0.0;
-        r.s1 = len;
         rows.push_back(r);
     }
     // A bend: a second hallway leaving the far end at a right angle, rooms on its outer side.
@@ -1760,8 +1754,7 @@ bool attempt(Layout layout, std::mt19937& rng, double res, Building& out, PlanSt
 Building makeBuildingImpl(const std::string& style, std::uint32_t seed, double resolution_m,
                           PlanStats* stats)
 {
-    std::vector<std::string> styles = buildingStyles();
-    for (const std::string& h : heldOutStyles()) styles.push_back(h);
+    const std::vector<std::string> styles = allStyles();
     const auto it = std::find(styles.begin(), styles.end(), style);
     if (it == styles.end())
         throw std::invalid_argument("makeBuilding: unknown style '" + style + "'");
@@ -1795,6 +1788,13 @@ std::vector<std::string> buildingStyles()
 }
 
 std::vector<std::string> heldOutStyles() { return {"ring", "warehouse", "house"}; }
+
+std::vector<std::string> allStyles()
+{
+    std::vector<std::string> all = buildingStyles();
+    for (const std::string& h : heldOutStyles()) all.push_back(h);
+    return all;
+}
 
 Building makeBuilding(const std::string& style, std::uint32_t seed, double resolution_m)
 {

@@ -35,7 +35,10 @@ std::vector<std::string> buildingStyles();
  * "Session 36"). */
 std::vector<std::string> heldOutStyles();
 
-/** Builds one building of `style` (buildingStyles() or heldOutStyles()) from `seed` at
+/** buildingStyles(), then heldOutStyles(): every style makeBuilding() builds. */
+std::vector<std::string> allStyles();
+
+/** Builds one building of `style` (one of allStyles()) from `seed` at
  * `resolution_m`. Same inputs, same grid (bit for bit). \throws std::invalid_argument on an
  * unknown style. */
 Building makeBuilding(const std::string& style, std::uint32_t seed, double resolution_m = 0.05);

@@ -70,11 +70,10 @@ struct Options
     bool force = false;
 };
 
-/** "a,b" -> {"a", "b"}, each a style of buildingStyles() or heldOutStyles(). */
+/** "a,b" -> {"a", "b"}, each a style of allStyles(). */
 std::vector<std::string> styleList(const std::string& text)
 {
-    std::vector<std::string> known = buildingStyles();
-    for (const std::string& h : heldOutStyles()) known.push_back(h);
+    const std::vector<std::string> known = allStyles();
     std::vector<std::string> out;
     std::stringstream ss(text);
     for (std::string item; std::getline(ss, item, ',');)
