@@ -68,6 +68,25 @@ COccupancyGridMap2D makeTwoRoomsMap(double res)
     return s.grid();
 }
 
+GridSketch hallBuildingSketch()
+{
+    GridSketch s(44.0, 20.0);
+    s.carve(1.0, 5.0, 42.0, 7.0);  // corridor
+    double x = 2.0;
+    for (double w : {5.0, 4.0, 6.0, 5.0, 4.5, 6.5})
+    {
+        s.carve(x, 1.0, x + w, 4.0).carve(x + 1.0, 4.0, x + 2.0, 5.0);
+        x += w + 1.0;
+    }
+    s.carve(1.0, 8.0, 21.0, 13.0).carve(9.0, 7.0, 11.0, 8.0);   // hall and its door
+    s.carve(3.0, 14.0, 8.0, 18.0).carve(5.0, 13.0, 6.0, 14.0);  // rooms off the hall
+    s.carve(10.0, 14.0, 14.0, 18.0).carve(11.0, 13.0, 12.0, 14.0);
+    s.carve(16.0, 14.0, 21.0, 17.0).carve(18.0, 13.0, 19.0, 14.0);
+    s.carve(23.0, 9.0, 30.0, 15.0).carve(25.0, 7.0, 26.0, 9.0);  // offices east
+    s.carve(32.0, 9.0, 41.0, 13.0).carve(35.0, 7.0, 36.0, 9.0);
+    return s;
+}
+
 COccupancyGridMap2D makePinwheelMap(double res)
 {
     constexpr double c = 22.0;

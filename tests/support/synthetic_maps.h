@@ -33,6 +33,11 @@ private:
     mrpt::maps::COccupancyGridMap2D m_grid;
 };
 
+/** A floor of 44 m x 20 m: a corridor with six offices south of it, a hall north of it (1-21 m
+ * x 8-13 m, its door at x 9-11 m) with three rooms off it, two offices east of the hall. A
+ * sketch, so that a test adds its own furniture or columns before taking the grid. */
+GridSketch hallBuildingSketch();
+
 /** Corridors 1.5 m wide: a horizontal corridor 12 m long with a branch 5 m long from its middle.
  * Graph: one junction of degree 3 at (7, 6.75) and three dead ends. */
 mrpt::maps::COccupancyGridMap2D makeTJunctionMap(double resolution_m = 0.05);

@@ -179,6 +179,24 @@ TOPOEVAL_PARAMETER_TABLE(
          "consistent growing: pairs at least this similar", atLeast(0).atMost(1)),
     real(TOPOEVAL_KEY(min_grown_wall_agreement), "0..1",
          "consistent growing: ... whose walls agree under the fit at least this much (0: off)",
+         atLeast(0).atMost(1)),
+    integer(TOPOEVAL_KEY(clutter_passes), "count",
+            "consistent: the map's free-standing obstacles the ground truth lacks where the "
+            "match puts them are freed and the map matched again, at most this often (0: off)",
+            atLeast(0).atMost(16)),
+    real(TOPOEVAL_KEY(clutter_max_size_m), "m",
+         "clutter pass: islands at most this wide (enclosing circle) may be clutter", above(0)),
+    real(TOPOEVAL_KEY(clutter_reach_m), "m",
+         "clutter pass: ... and within this of a matched map vertex", atLeast(0)),
+    real(TOPOEVAL_KEY(clutter_wall_tolerance_m), "m",
+         "clutter pass: an island border cell this near a ground-truth wall (aligned) is on it",
+         above(0)),
+    real(TOPOEVAL_KEY(clutter_min_wall_share), "ratio",
+         "clutter pass: an island with this share of its border on the ground truth's walls "
+         "stays",
+         above(0).atMost(1)),
+    real(TOPOEVAL_KEY(clutter_min_share), "ratio",
+         "clutter pass: runs when its first round finds this share of the islands judged clutter",
          atLeast(0).atMost(1)))
 
 }  // namespace mrpt_topoeval
