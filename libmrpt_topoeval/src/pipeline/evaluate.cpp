@@ -98,8 +98,7 @@ std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyG
            "puts them made free and the map matched again (" +
            std::to_string(passes) + " pass(es)): " + std::to_string(first_pairs) + " -> " +
            std::to_string(m.match.pairs.size()) +
-           " pairs; the graph reported is the map's "
-           "without them";
+           " pairs; the map's graph reported is without them";
 }
 
 // Similarity, match (with the clutter pass, which may replace `map`'s graph) and evaluation of
