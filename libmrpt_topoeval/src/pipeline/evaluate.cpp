@@ -1,6 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 // The one-call pipeline: both graphs, vertex similarity, match, evaluation (paper II-IV).
 
+#include <mrpt/maps/COccupancyGridMap2D.h>  // the clutter pass keeps an edited copy
 #include <mrpt_topoeval/Parameters.h>
 #include <mrpt_topoeval/evaluation/evaluate_match.h>
 #include <mrpt_topoeval/graph/build_graph.h>
