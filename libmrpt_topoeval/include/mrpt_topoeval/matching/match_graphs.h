@@ -435,8 +435,8 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
     int clutter_passes = 3;
     /** ... an island (8-connected non-free cells surrounded by free space) wider than this
      * (smallest enclosing circle) is building structure, never clutter: furniture is at most a
-     * desk row or a shelf (the corpus's desks and shelves 0.6-2.4 m, a warehouse's pallets about
-     * 1 m; its racks, free-standing walls and halls' inner blocks are longer) [m]; */
+     * desk row or a shelf (the validation corpus's desks 0.6-1.6 m long, its shelves 1-2 m, a
+     * warehouse's pallets 0.8-1.2 m; racks and free-standing walls are longer) [m]; */
     double clutter_max_size_m = 3.0;
     /** ... and only islands within this of a matched map vertex are judged: farther the
      * match's alignments say little (a broken map's unmatched part) [m]; */
