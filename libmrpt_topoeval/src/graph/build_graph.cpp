@@ -13,6 +13,7 @@
 
 #include "graph/GraphEditor.h"
 #include "graph/attributes.h"
+#include "graph/islands.h"
 #include "skeleton/outer_boundary.h"
 #include "skeleton/voronoi_cgal.h"
 
@@ -340,11 +341,7 @@ std::size_t removeSmallIslands(std::vector<std::uint8_t>& cls, int sx, int sy,
                     if (row[x] == k)
                         cells.emplace_back(static_cast<float>(x), static_cast<float>(y));
             }
-            cv::Point2f centre;
-            float radius = 0.0f;
-            cv::minEnclosingCircle(cells, centre, radius);
-            // Cell centres span the diameter; the cells' squares add about one cell.
-            if (!(2.0 * radius + 1.0 < min_size_cells)) continue;
+            if (!(internal::islandWidthCells(cells) < min_size_cells)) continue;
             ++removed;
             for (int y = ys; y < ys + h; ++y)
             {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geometry/horn.h"
+#include "graph/islands.h"
 #include "matching/wall_agreement.h"
 
 namespace mrpt_topoeval::internal
@@ -79,10 +80,9 @@ std::optional<mrpt::maps::COccupancyGridMap2D> withoutClutter(
     const double min_cells = params.graph.min_island_size_m / res;
     const double max_cells = p.clutter_max_size_m / res;
     const double reach2 = p.clutter_reach_m * p.clutter_reach_m;
-    std::size_t judged_islands = 0;
-    std::vector<std::vector<cv::Point>> clutter;
+    std::vector<std::vector<cv::Point2f>> clutter;  // each island's cells in the region
     std::vector<cv::Point2f> cells;
-    std::vector<cv::Point> border;
+    std::vector<Eigen::Vector2d> border;  // its border cells' centres in the map's frame [m]
     for (int k = 1; k < n; ++k)
     {
         const int bx = boxes.at<int>(k, cv::CC_STAT_LEFT), by = boxes.at<int>(k, cv::CC_STAT_TOP);
@@ -102,13 +102,11 @@ std::optional<mrpt::maps::COccupancyGridMap2D> withoutClutter(
                 // A border cell has a free 4-neighbour (the island touches no edge).
                 if (labels.at<int>(y - 1, x) != k || labels.at<int>(y + 1, x) != k ||
                     labels.at<int>(y, x - 1) != k || labels.at<int>(y, x + 1) != k)
-                    border.emplace_back(x, y);
+                    border.emplace_back(map_grid.idx2x(x0 + x), map_grid.idx2y(y0 + y));
             }
         }
         cv::Point2f centre;
-        float radius = 0.0f;
-        cv::minEnclosingCircle(cells, centre, radius);
-        const double size = 2.0 * radius + 1.0;  // cell centres span it; the squares add a cell
+        const double size = islandWidthCells(cells, &centre);
         // Smaller ones are the graph builder's to remove (min_island_size_m).
         if (size < min_cells || size > max_cells) continue;
         const Eigen::Vector2d c(map_grid.idx2x(x0 + static_cast<int>(std::lround(centre.x))),
@@ -121,7 +119,7 @@ std::optional<mrpt::maps::COccupancyGridMap2D> withoutClutter(
         // Structure the ground truth has (a column, a free-standing wall) lies on its walls
         // under one of the alignments; a bent map is rigid only locally, so the fit of the
         // pairs within reach is asked too.
-        ++judged_islands;
+        ++judged;
         std::vector<Transform2D> island_alignments = alignments;
         if (local_map.size() >= 3) island_alignments.push_back(hornAlign(local_gt, local_map));
         bool in_gt = false;
@@ -129,25 +127,20 @@ std::optional<mrpt::maps::COccupancyGridMap2D> withoutClutter(
         {
             std::size_t on = 0;
             for (const auto& b : border)
-                on += gt_walls.near(
-                    t.apply(Eigen::Vector2d(map_grid.idx2x(x0 + b.x), map_grid.idx2y(y0 + b.y))),
-                    p.clutter_wall_tolerance_m);
+                on += gt_walls.near(t.apply(b), p.clutter_wall_tolerance_m);
             if (double(on) >= p.clutter_min_wall_share * double(border.size()))
             {
                 in_gt = true;
                 break;
             }
         }
-        if (in_gt) continue;
-        clutter.emplace_back();
-        for (const auto& q : cells)
-            clutter.back().emplace_back(static_cast<int>(q.x), static_cast<int>(q.y));
+        if (!in_gt) clutter.push_back(cells);
     }
-    judged = judged_islands;
     if (clutter.empty()) return std::nullopt;
     mrpt::maps::COccupancyGridMap2D out = map_grid;
     for (const auto& island : clutter)
-        for (const auto& q : island) out.setCell(x0 + q.x, y0 + q.y, 1.0f);  // P(free) = 1
+        for (const auto& q : island)  // P(free) = 1
+            out.setCell(x0 + static_cast<int>(q.x), y0 + static_cast<int>(q.y), 1.0f);
     removed = clutter.size();
     return out;
 }
