@@ -19,6 +19,7 @@
 
 #include "../libmrpt_topoeval/src/pipeline/clutter.h"
 #include "synthetic_maps.h"
+#include "test_paths.h"
 
 using namespace mrpt_topoeval;
 using namespace mrpt_topoeval::testing;
@@ -142,4 +143,70 @@ TEST(ClutterPass, NothingChangesWithoutClutterOrWithThePapersMethod)
     Parameters paper;
     paper.matcher.method = MatchMethod::Paper;
     EXPECT_FALSE(saysClutter(evaluate(plain, furnished, paper)));
+}
+
+TEST(ClutterPass, AMapFurnishedEverywhereStartsFromItsIslandsFreed)
+{
+    // Held-out warehouse_1002/furniture (tests/data/furnished_everywhere): pallets around every
+    // junction, and the plan's columns in both maps. The map's own match pairs nothing, so the
+    // pass has no alignment to judge by. With clutter_start_without_islands it judges first by
+    // the match of the map with all its islands freed (the columns too), and frees only what
+    // the plan lacks. Known answer: the map is the plan's grid (same frame), so a pair is true
+    // when its vertices are within the corpus's tolerance of each other.
+    const auto [gt_grid, map_grid] = corpusCase("furnished_everywhere", "warehouse_1002_furniture");
+    Parameters off;
+    off.matcher.clutter_start_without_islands = false;
+    const Parameters on;
+    const QualityReport r_off = evaluate(gt_grid, map_grid, off);
+    EXPECT_TRUE(r_off.match.pairs.empty());
+    EXPECT_FALSE(saysClutter(r_off));
+
+    TopologyGraph gt, map;
+    const QualityReport r_on = evaluate(gt_grid, map_grid, on, &gt, &map);
+    const auto message =
+        std::find_if(r_on.messages.begin(), r_on.messages.end(),
+                     [](const std::string& m) { return m.rfind("clutter pass", 0) == 0; });
+    ASSERT_NE(message, r_on.messages.end());
+    EXPECT_NE(message->find("with all its"), std::string::npos) << *message;
+    EXPECT_GE(r_on.coverage, 0.9);
+    std::size_t true_pairs = 0;
+    for (const auto& pr : r_on.match.pairs)
+    {
+        const auto& g = gt.vertices[pr.ground_truth];
+        const auto& m = map.vertices[pr.map];
+        true_pairs += (g.position_m - m.position_m).norm() <=
+                      std::max(0.5, 0.5 * std::max(g.clearance_m, m.clearance_m));
+    }
+    EXPECT_EQ(true_pairs, r_on.match.pairs.size());
+    EXPECT_GT(r_on.quality, 0.9);
+
+    // The first round, step by step: the map with all its islands freed (the columns too) is
+    // matched, and by that match only what the plan lacks is freed: every column of the plan
+    // (its own islands) is still in the map. (13 of the map's 27 islands are freed in this
+    // round, those within reach of its 5 pairs; the next pass frees 5 more.)
+    Parameters no_pass;
+    no_pass.matcher.clutter_passes = 0;
+    std::size_t n_map_islands = 0, n_columns = 0, removed = 0, judged = 0;
+    const auto bare = internal::withoutIslands(map_grid, on, n_map_islands);
+    const auto columns = internal::withoutIslands(gt_grid, on, n_columns);
+    ASSERT_TRUE(bare && columns);
+    TopologyGraph bare_graph;
+    const QualityReport start = evaluate(gt, gt_grid, *bare, no_pass, &bare_graph);
+    ASSERT_GE(start.match.pairs.size(), 3u);
+    const auto edited =
+        internal::withoutClutter(gt, bare_graph, map_grid, start.match, on, removed, judged);
+    ASSERT_TRUE(edited);
+    EXPECT_GT(removed, 0u);
+    EXPECT_GT(n_columns, 0u);
+    EXPECT_LE(removed + n_columns, n_map_islands);
+    std::size_t column_cells = 0, kept = 0;
+    for (unsigned y = 0; y < gt_grid.getSizeY(); ++y)
+        for (unsigned x = 0; x < gt_grid.getSizeX(); ++x)
+            if (gt_grid.getCell(x, y) < 0.5f && columns->getCell(x, y) > 0.5f)
+            {
+                ++column_cells;
+                kept += edited->getCell(x, y) < 0.5f;
+            }
+    EXPECT_GT(column_cells, 0u);
+    EXPECT_EQ(kept, column_cells);
 }

@@ -197,6 +197,9 @@ TOPOEVAL_PARAMETER_TABLE(
          above(0).atMost(1)),
     real(TOPOEVAL_KEY(clutter_min_share), "ratio",
          "clutter pass: runs when its first round finds this share of the islands judged clutter",
-         atLeast(0).atMost(1)))
+         atLeast(0).atMost(1)),
+    flag(TOPOEVAL_KEY(clutter_start_without_islands),
+         "clutter pass: a map whose match pairs fewer than 3 vertices is judged by the match of "
+         "the map without all its islands"))
 
 }  // namespace mrpt_topoeval

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <opencv2/imgproc.hpp>
@@ -20,6 +21,89 @@
 
 namespace mrpt_topoeval::internal
 {
+namespace
+{
+/** An island of the region: its cells (region coordinates), its border cells' centres and its
+ * enclosing circle's centre in the map's frame [m]. */
+struct Island
+{
+    std::vector<cv::Point2f> cells;
+    std::vector<Eigen::Vector2d> border;
+    Eigen::Vector2d centre;
+};
+
+/** Calls `judge` for each island of `map_grid`'s cells [x0, x0 + w) x [y0, y0 + h) from
+ * min_island_size_m to clutter_max_size_m across (8-connected non-free cells, as the graph
+ * builder reads free space, surrounded by free space; one touching the region's edge may go on
+ * beyond it and is skipped), and returns those it says are clutter. */
+std::vector<std::vector<cv::Point2f>> clutterIslands(
+    const mrpt::maps::COccupancyGridMap2D& map_grid, int x0, int y0, int w, int h,
+    const Parameters& params, const std::function<bool(const Island&)>& judge)
+{
+    const double res = map_grid.getResolution();
+    // Non-free cells, as the graph builder reads free space (P(occupied) <= free_max_prob).
+    using Cell = mrpt::maps::COccupancyGridMap2D::cellType;
+    const Cell free_l =
+        mrpt::maps::COccupancyGridMap2D::p2l(static_cast<float>(1.0 - params.graph.free_max_prob));
+    cv::Mat solid(h, w, CV_8UC1);
+    for (int y = 0; y < h; ++y)
+    {
+        const Cell* row = map_grid.getRow(y0 + y);
+        auto* out = solid.ptr<std::uint8_t>(y);
+        for (int x = 0; x < w; ++x) out[x] = row[x0 + x] >= free_l ? 0 : 1;
+    }
+    cv::Mat labels, boxes, centroids;
+    const int n = cv::connectedComponentsWithStats(solid, labels, boxes, centroids, 8, CV_32S);
+
+    const double min_cells = params.graph.min_island_size_m / res;
+    const double max_cells = params.matcher.clutter_max_size_m / res;
+    std::vector<std::vector<cv::Point2f>> clutter;
+    Island island;
+    for (int k = 1; k < n; ++k)
+    {
+        const int bx = boxes.at<int>(k, cv::CC_STAT_LEFT), by = boxes.at<int>(k, cv::CC_STAT_TOP);
+        const int bw = boxes.at<int>(k, cv::CC_STAT_WIDTH),
+                  bh = boxes.at<int>(k, cv::CC_STAT_HEIGHT);
+        if (bx == 0 || by == 0 || bx + bw == w || by + bh == h) continue;  // not surrounded
+        if (std::max(bw, bh) > max_cells + 1.0) continue;  // wider than its enclosing circle
+        island.cells.clear();
+        island.border.clear();
+        for (int y = by; y < by + bh; ++y)
+        {
+            const int* row = labels.ptr<int>(y);
+            for (int x = bx; x < bx + bw; ++x)
+            {
+                if (row[x] != k) continue;
+                island.cells.emplace_back(static_cast<float>(x), static_cast<float>(y));
+                // A border cell has a free 4-neighbour (the island touches no edge).
+                if (labels.at<int>(y - 1, x) != k || labels.at<int>(y + 1, x) != k ||
+                    labels.at<int>(y, x - 1) != k || labels.at<int>(y, x + 1) != k)
+                    island.border.emplace_back(map_grid.idx2x(x0 + x), map_grid.idx2y(y0 + y));
+            }
+        }
+        cv::Point2f centre;
+        const double size = islandWidthCells(island.cells, &centre);
+        // Smaller ones are the graph builder's to remove (min_island_size_m).
+        if (size < min_cells || size > max_cells) continue;
+        island.centre = {map_grid.idx2x(x0 + static_cast<int>(std::lround(centre.x))),
+                         map_grid.idx2y(y0 + static_cast<int>(std::lround(centre.y)))};
+        if (judge(island)) clutter.push_back(island.cells);
+    }
+    return clutter;
+}
+
+/** A copy of `map_grid` with `clutter` (cells of the region at x0, y0) made free. */
+mrpt::maps::COccupancyGridMap2D freed(const mrpt::maps::COccupancyGridMap2D& map_grid, int x0,
+                                      int y0, const std::vector<std::vector<cv::Point2f>>& clutter)
+{
+    mrpt::maps::COccupancyGridMap2D out = map_grid;
+    for (const auto& island : clutter)
+        for (const auto& q : island)  // P(free) = 1
+            out.setCell(x0 + static_cast<int>(q.x), y0 + static_cast<int>(q.y), 1.0f);
+    return out;
+}
+}  // namespace
+
 std::optional<mrpt::maps::COccupancyGridMap2D> withoutClutter(
     const TopologyGraph& gt, const TopologyGraph& map,
     const mrpt::maps::COccupancyGridMap2D& map_grid, const GraphMatch& match,
@@ -28,10 +112,9 @@ std::optional<mrpt::maps::COccupancyGridMap2D> withoutClutter(
     removed = judged = 0;
     const GraphMatcherParameters& p = params.matcher;
     if (match.pairs.size() < 3 || gt.wall_points_m.empty()) return std::nullopt;
-    const double res = map_grid.getResolution();
     const int sx = static_cast<int>(map_grid.getSizeX()),
               sy = static_cast<int>(map_grid.getSizeY());
-    if (sx < 3 || sy < 3 || !(res > 0.0)) return std::nullopt;
+    if (sx < 3 || sy < 3 || !(map_grid.getResolution() > 0.0)) return std::nullopt;
 
     // The alignments the match knows (ground truth <- map): Horn's fit of all its pairs and of
     // each of its groups (a broken map's parts each have their own).
@@ -51,7 +134,7 @@ std::optional<mrpt::maps::COccupancyGridMap2D> withoutClutter(
 
     // Islands are judged only where the match speaks: within clutter_reach_m of a matched map
     // vertex. The region worked on is their bounding box, widened by the reach and the largest
-    // island; an island touching its edge may go on beyond it and is not judged.
+    // island.
     Eigen::Vector2d lo = matched.front(), hi = matched.front();
     for (const auto& q : matched) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
     const double pad = p.clutter_reach_m + p.clutter_max_size_m;
@@ -62,87 +145,50 @@ std::optional<mrpt::maps::COccupancyGridMap2D> withoutClutter(
     const int w = x1 - x0 + 1, h = y1 - y0 + 1;
     if (w < 3 || h < 3) return std::nullopt;
 
-    // Non-free cells, as the graph builder reads free space (P(occupied) <= free_max_prob).
-    using Cell = mrpt::maps::COccupancyGridMap2D::cellType;
-    const Cell free_l =
-        mrpt::maps::COccupancyGridMap2D::p2l(static_cast<float>(1.0 - params.graph.free_max_prob));
-    cv::Mat solid(h, w, CV_8UC1);
-    for (int y = 0; y < h; ++y)
-    {
-        const Cell* row = map_grid.getRow(y0 + y);
-        auto* out = solid.ptr<std::uint8_t>(y);
-        for (int x = 0; x < w; ++x) out[x] = row[x0 + x] >= free_l ? 0 : 1;
-    }
-    cv::Mat labels, boxes, centroids;
-    const int n = cv::connectedComponentsWithStats(solid, labels, boxes, centroids, 8, CV_32S);
-
     WallIndex gt_walls(gt.wall_points_m);
-    const double min_cells = params.graph.min_island_size_m / res;
-    const double max_cells = p.clutter_max_size_m / res;
     const double reach2 = p.clutter_reach_m * p.clutter_reach_m;
-    std::vector<std::vector<cv::Point2f>> clutter;  // each island's cells in the region
-    std::vector<cv::Point2f> cells;
-    std::vector<Eigen::Vector2d> border;  // its border cells' centres in the map's frame [m]
-    for (int k = 1; k < n; ++k)
-    {
-        const int bx = boxes.at<int>(k, cv::CC_STAT_LEFT), by = boxes.at<int>(k, cv::CC_STAT_TOP);
-        const int bw = boxes.at<int>(k, cv::CC_STAT_WIDTH),
-                  bh = boxes.at<int>(k, cv::CC_STAT_HEIGHT);
-        if (bx == 0 || by == 0 || bx + bw == w || by + bh == h) continue;  // not surrounded
-        if (std::max(bw, bh) > max_cells + 1.0) continue;  // wider than its enclosing circle
-        cells.clear();
-        border.clear();
-        for (int y = by; y < by + bh; ++y)
+    const auto clutter = clutterIslands(
+        map_grid, x0, y0, w, h, params,
+        [&](const Island& island)
         {
-            const int* row = labels.ptr<int>(y);
-            for (int x = bx; x < bx + bw; ++x)
+            std::vector<Eigen::Vector2d> local_gt, local_map;
+            for (std::size_t i = 0; i < matched.size(); ++i)
+                if ((matched[i] - island.centre).squaredNorm() <= reach2)
+                    local_gt.push_back(matched_gt[i]), local_map.push_back(matched[i]);
+            if (local_map.empty()) return false;
+            // Structure the ground truth has (a column, a free-standing wall) lies on its walls
+            // under one of the alignments; a bent map is rigid only locally, so the fit of the
+            // pairs within reach is asked too.
+            ++judged;
+            std::vector<Transform2D> island_alignments = alignments;
+            if (local_map.size() >= 3) island_alignments.push_back(hornAlign(local_gt, local_map));
+            for (const auto& t : island_alignments)
             {
-                if (row[x] != k) continue;
-                cells.emplace_back(static_cast<float>(x), static_cast<float>(y));
-                // A border cell has a free 4-neighbour (the island touches no edge).
-                if (labels.at<int>(y - 1, x) != k || labels.at<int>(y + 1, x) != k ||
-                    labels.at<int>(y, x - 1) != k || labels.at<int>(y, x + 1) != k)
-                    border.emplace_back(map_grid.idx2x(x0 + x), map_grid.idx2y(y0 + y));
+                std::size_t on = 0;
+                for (const auto& b : island.border)
+                    on += gt_walls.near(t.apply(b), p.clutter_wall_tolerance_m);
+                if (double(on) >= p.clutter_min_wall_share * double(island.border.size()))
+                    return false;
             }
-        }
-        cv::Point2f centre;
-        const double size = islandWidthCells(cells, &centre);
-        // Smaller ones are the graph builder's to remove (min_island_size_m).
-        if (size < min_cells || size > max_cells) continue;
-        const Eigen::Vector2d c(map_grid.idx2x(x0 + static_cast<int>(std::lround(centre.x))),
-                                map_grid.idx2y(y0 + static_cast<int>(std::lround(centre.y))));
-        std::vector<Eigen::Vector2d> local_gt, local_map;
-        for (std::size_t i = 0; i < matched.size(); ++i)
-            if ((matched[i] - c).squaredNorm() <= reach2)
-                local_gt.push_back(matched_gt[i]), local_map.push_back(matched[i]);
-        if (local_map.empty()) continue;
-        // Structure the ground truth has (a column, a free-standing wall) lies on its walls
-        // under one of the alignments; a bent map is rigid only locally, so the fit of the
-        // pairs within reach is asked too.
-        ++judged;
-        std::vector<Transform2D> island_alignments = alignments;
-        if (local_map.size() >= 3) island_alignments.push_back(hornAlign(local_gt, local_map));
-        bool in_gt = false;
-        for (const auto& t : island_alignments)
-        {
-            std::size_t on = 0;
-            for (const auto& b : border)
-                on += gt_walls.near(t.apply(b), p.clutter_wall_tolerance_m);
-            if (double(on) >= p.clutter_min_wall_share * double(border.size()))
-            {
-                in_gt = true;
-                break;
-            }
-        }
-        if (!in_gt) clutter.push_back(cells);
-    }
+            return true;
+        });
     if (clutter.empty()) return std::nullopt;
-    mrpt::maps::COccupancyGridMap2D out = map_grid;
-    for (const auto& island : clutter)
-        for (const auto& q : island)  // P(free) = 1
-            out.setCell(x0 + static_cast<int>(q.x), y0 + static_cast<int>(q.y), 1.0f);
     removed = clutter.size();
-    return out;
+    return freed(map_grid, x0, y0, clutter);
+}
+
+std::optional<mrpt::maps::COccupancyGridMap2D> withoutIslands(
+    const mrpt::maps::COccupancyGridMap2D& map_grid, const Parameters& params, std::size_t& removed)
+{
+    removed = 0;
+    const int sx = static_cast<int>(map_grid.getSizeX()),
+              sy = static_cast<int>(map_grid.getSizeY());
+    if (sx < 3 || sy < 3 || !(map_grid.getResolution() > 0.0)) return std::nullopt;
+    const auto islands =
+        clutterIslands(map_grid, 0, 0, sx, sy, params, [](const Island&) { return true; });
+    if (islands.empty()) return std::nullopt;
+    removed = islands.size();
+    return freed(map_grid, 0, 0, islands);
 }
 
 }  // namespace mrpt_topoeval::internal

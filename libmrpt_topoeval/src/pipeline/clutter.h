@@ -35,4 +35,12 @@ std::optional<mrpt::maps::COccupancyGridMap2D> withoutClutter(
     const mrpt::maps::COccupancyGridMap2D& map_grid, const GraphMatch& match,
     const Parameters& params, std::size_t& removed, std::size_t& judged);
 
+/** A copy of `map_grid` with every island from min_island_size_m to clutter_max_size_m across
+ * made free, unjudged, and their number in `removed`; none when there is none. The clutter pass
+ * starts from a match of it when the map's own match pairs too few vertices to judge by
+ * (GraphMatcherParameters::clutter_start_without_islands). */
+std::optional<mrpt::maps::COccupancyGridMap2D> withoutIslands(
+    const mrpt::maps::COccupancyGridMap2D& map_grid, const Parameters& params,
+    std::size_t& removed);
+
 }  // namespace mrpt_topoeval::internal

@@ -63,27 +63,46 @@ Matched matchStep(const TopologyGraph& gt, const mrpt::maps::COccupancyGridMap2D
 // The clutter pass (GraphMatcherParameters::clutter_passes; doc/matching.md): the map without
 // the free-standing obstacles that the ground truth lacks where the match `m` puts them, built
 // and matched again; kept, with its graph in `map`, when it pairs more vertices. A match that
-// grew reaches further islands: the pass repeats on the edited map. Returns what it did, for
-// the report's messages (empty when it changed nothing).
+// grew reaches further islands: the pass repeats on the edited map. A match of fewer than 3
+// pairs gives nothing to judge by: the first round then judges by the match of the map with
+// all its islands freed (clutter_start_without_islands). Returns what it did, for the report's
+// messages (empty when it changed nothing).
 std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyGridMap2D& gt_grid,
                           TopologyGraph& map, const mrpt::maps::COccupancyGridMap2D& map_grid,
                           const Parameters& params, Matched& m)
 {
-    if (params.matcher.method != MatchMethod::Consistent) return {};
+    const GraphMatcherParameters& p = params.matcher;
+    if (p.method != MatchMethod::Consistent || p.clutter_passes <= 0) return {};
+    // What the first round judges by: the match itself, or that of the map without islands.
+    std::optional<TopologyGraph> start_graph;
+    std::optional<GraphMatch> start_match;
+    std::size_t start_islands = 0;
+    if (m.match.pairs.size() < 3 && p.clutter_start_without_islands)
+    {
+        if (auto bare = internal::withoutIslands(map_grid, params, start_islands))
+        {
+            TopologyGraph graph = buildTopologyGraph(*bare, params.graph);
+            Matched bare_match = matchStep(gt, gt_grid, graph, *bare, params);
+            if (bare_match.match.pairs.size() >= 3)
+                start_graph = std::move(graph), start_match = std::move(bare_match.match);
+        }
+    }
     std::optional<mrpt::maps::COccupancyGridMap2D> current;  // the map as edited so far
     const std::size_t first_pairs = m.match.pairs.size();
     std::size_t removed_total = 0;
     int passes = 0;
-    for (int pass = 0; pass < params.matcher.clutter_passes; ++pass)
+    for (int pass = 0; pass < p.clutter_passes; ++pass)
     {
+        const bool from_start = pass == 0 && start_match;
         std::size_t removed = 0, judged = 0;
-        auto edited = internal::withoutClutter(gt, map, current ? *current : map_grid, m.match,
-                                               params, removed, judged);
+        auto edited = internal::withoutClutter(
+            gt, from_start ? *start_graph : map, current ? *current : map_grid,
+            from_start ? *start_match : m.match, params, removed, judged);
         if (!edited) break;
         // Is the map furnished where its ground truth is not? A ground truth drawn from a robot
         // map holds the same furniture; the few islands it lacks are noise and not worth a
         // rebuild.
-        if (pass == 0 && double(removed) < params.matcher.clutter_min_share * double(judged)) break;
+        if (pass == 0 && double(removed) < p.clutter_min_share * double(judged)) break;
         TopologyGraph graph = buildTopologyGraph(*edited, params.graph);
         Matched next = matchStep(gt, gt_grid, graph, *edited, params);
         if (next.match.pairs.size() <= m.match.pairs.size()) break;
@@ -94,10 +113,15 @@ std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyG
         ++passes;
     }
     if (passes == 0) return {};
-    return "clutter pass: " + std::to_string(removed_total) +
-           " free-standing obstacle(s) of the map that the ground truth lacks where the match "
-           "puts them made free and the map matched again (" +
-           std::to_string(passes) + " pass(es)): " + std::to_string(first_pairs) + " -> " +
+    std::string text = "clutter pass: " + std::to_string(removed_total) +
+                       " free-standing obstacle(s) of the map that the ground truth lacks where "
+                       "the match puts them made free and the map matched again (" +
+                       std::to_string(passes) + " pass(es)";
+    if (start_match)
+        text += "; judged first by the " + std::to_string(start_match->pairs.size()) +
+                " pairs of the map with all its " + std::to_string(start_islands) +
+                " islands freed, as its own match paired fewer than 3";
+    return text + "): " + std::to_string(first_pairs) + " -> " +
            std::to_string(m.match.pairs.size()) +
            " pairs; the map's graph reported is without them";
 }
