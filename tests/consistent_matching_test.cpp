@@ -432,6 +432,8 @@ TEST(ConsistentMatching, AnInsignificantFirstGroupIsRefusedAndSaysSo)
     // which test refused it.
     GraphMatcherParameters trusting = tp.matcher;
     trusting.max_false_alarms = 1e300;
+    // The wider look, with no significance test, finds a chance group among its longer lists.
+    trusting.first_group_wider_look = false;
     const GraphMatch t = matchGrids(a, b, trusting);
     EXPECT_TRUE(t.pairs.empty());
     ASSERT_FALSE(t.messages.empty());
@@ -1479,7 +1481,11 @@ TEST(ConsistentMatching, AFirstGroupIsFoundAmongTheMaximalCliques)
     const auto partOf = partOfTruth(truth);
     const auto [r, r0] = withAndWithout(corpusCase("maximal_clique", "angled_16004_broken_3"),
                                         [](GraphMatcherParameters& m)
-                                        { m.first_group_from_maximal_cliques = false; });
+                                        {
+                                            m.first_group_from_maximal_cliques = false;
+                                            // Alone, it finds a first group here too.
+                                            m.first_group_wider_look = false;
+                                        });
     // Every pair true; the four parts are four brokenness groups, each of one part.
     expectOneGroupPerPart(r, partOf, 20, {0, 1, 2, 3});
     // Without the rule nothing is matched.
@@ -1507,7 +1513,11 @@ TEST(ConsistentMatching, TheMaximalCliquesAreTriedInTurn)
     const auto partOf = partOfTruth(truth);
     const auto [r, r0] = withAndWithout(
         corpusCase("maximal_cliques_in_turn", "multi_wing_10001_broken_3"),
-        [](GraphMatcherParameters& m) { m.first_group_maximal_cliques_in_turn = false; });
+        [](GraphMatcherParameters& m)
+        {
+            m.first_group_maximal_cliques_in_turn = false;
+            m.first_group_wider_look = false;  // alone, it finds a first group here too
+        });
     // Every pair true, and the four parts are four brokenness groups. Part 0's room at the cut
     // (gt 3, whose dead end part 1's fit places within tolerance too) joins part 1's group: of
     // every group all pairs but at most one are of one part.
@@ -1958,4 +1968,64 @@ TEST(ConsistentMatching, AFurtherGroupWhosePairsWallsDisagreeIsRefused)
     const QualityReport rt = evaluate(gt, map, turns_only);
     for (const auto& [g, m] : turned) EXPECT_NE(rt.match.mapVertexOf(g), m) << g;
     EXPECT_LT(worstTurnError(rt), 3.0);
+}
+
+// A first group not found among the first candidate lists is sought once more among
+// leftover_candidates_per_vertex lists (first_group_wider_look): fresh seed 28's
+// column_hall_28001/broken_1 (tests/data/first_wider_look), a column hall cut in two, parts
+// turned 68.07 and 53.48 degrees. Its hall's junctions all look alike and the cut changed their
+// attributes: among 5 candidates per vertex the biggest consistent group (5 pairs) is not
+// significant and nothing is matched. The truth is the validator's (`*.counterparts.txt`).
+TEST(ConsistentMatching, AFirstGroupNotAmongTheFirstListsIsFoundByAWiderLook)
+{
+    const auto [gt, map] = corpusCase("first_wider_look", "column_hall_28001_broken_1");
+    const std::vector<TruthPair> truth = {
+        {0, 2, 1},   {1, 0, 1},   {2, 4, 1},   {3, 13, 1},  {4, 23, 1},  {5, 5, 1},   {7, 15, 1},
+        {8, 7, 1},   {9, 15, 1},  {10, 25, 1}, {11, 26, 1}, {14, 5, 0},  {16, 21, 0}, {17, 27, 0},
+        {18, 27, 0}, {19, 16, 0}, {20, 22, 0}, {21, 28, 0}, {22, 10, 0}, {23, 24, 0}, {24, 18, 0},
+        {25, 9, 0},  {26, 30, 0}, {27, 31, 0}, {28, 19, 0}};
+    const auto partOf = partOfTruth(truth);
+    const std::vector<double> turns = {68.07, 53.48};
+    Parameters with = Parameters{}, without = Parameters{};
+    without.matcher.first_group_wider_look = false;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    EXPECT_TRUE(r0.match.pairs.empty());
+    // Both parts matched, most pairs the truth's own (the rest within its tolerance or, two of
+    // 21, false in the hall's lattice), one break, each group within 3 degrees of a part.
+    ASSERT_GE(r.match.pairs.size(), 15u);
+    std::map<int, int> per_part;
+    for (const auto& p : r.match.pairs)
+        if (const int part = partOf(p.ground_truth, p.map); part >= 0) ++per_part[part];
+    EXPECT_GE(per_part[0], 5);
+    EXPECT_GE(per_part[1], 5);
+    EXPECT_EQ(r.brokenness.degree, 1);
+    std::set<int> parts;
+    for (const auto& g : r.brokenness.groups)
+    {
+        int best = -1;
+        double error = 1e9;
+        for (std::size_t k = 0; k < turns.size(); ++k)
+        {
+            const double e = std::abs(std::remainder(g.transform.yaw_deg - turns[k], 360.0));
+            if (e < error) error = e, best = int(k);
+        }
+        EXPECT_LE(error, 3.0) << g.transform.yaw_deg;
+        parts.insert(best);
+    }
+    EXPECT_EQ(parts, (std::set<int>{0, 1}));
+}
+
+// The wider look for the first group asks the walls of a small part (min_part_wall_agreement,
+// max_wall_pinning), as a first group among the maximal cliques does: longer lists hold more
+// chance groups, and two buildings of one code share their layouts. Seed 2's near-twin
+// campus_2001/twin (tests/data/first_wider_look; every pair false) matches nothing among 5
+// candidates per vertex; among 10 a chance group of 6 pairs passes significance and the small
+// first group's walls (0.61), and 29 false pairs followed until its walls' pinning (1.25: the
+// walls agree better with the fit moved) refused it.
+TEST(ConsistentMatching, AWiderLookForTheFirstGroupAsksItsWalls)
+{
+    const auto [gt, map] = corpusCase("first_wider_look", "campus_2001_twin");
+    const QualityReport r = evaluate(gt, map, Parameters{});
+    EXPECT_TRUE(r.match.pairs.empty());
 }

@@ -48,6 +48,8 @@ TOPOEVAL_PARAMETER_TABLE(
             "consistent: ... per free vertex once no further group is found (at most "
             "candidates_per_vertex: off)",
             atLeast(0)),
+    flag(TOPOEVAL_KEY(first_group_wider_look),
+         "consistent: ... and once no first group is found among the first lists"),
     real(TOPOEVAL_KEY(min_candidate_similarity), "0..1",
          "consistent: candidate pairs are at least this similar", atLeast(0).atMost(1)),
     integer(TOPOEVAL_KEY(max_degree_difference), "1",

@@ -79,6 +79,13 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * significant among them (max_false_alarms): longer lists hold more chance groups. At
      * most candidates_per_vertex: off (doc/matching.md, "A wider look at the leftovers") [1]. */
     int leftover_candidates_per_vertex = 10;
+    /** When no first group is found among the candidates_per_vertex lists, it is sought once
+     * more among leftover_candidates_per_vertex lists, with the pairs of the cliques refused
+     * before asked again; it must pass every test of a first group, significance among the
+     * longer lists included. In a hall's lattice, whose junctions all look alike, a break
+     * changes the attributes of the vertices next to it and their true partners rank below
+     * the first lists (doc/matching.md, "A wider look for the first group") [bool]. */
+    bool first_group_wider_look = true;
     /** Candidate and grown pairs differ in degree by at most this: a small loop or an extra
      * dead end changes a junction's degree by one [1]. */
     int max_degree_difference = 1;
