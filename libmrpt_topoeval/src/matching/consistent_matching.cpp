@@ -975,6 +975,8 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // of the cliques refused in the first look are asked again: among the longer lists they can
     // belong to a bigger clique. The significance test counts the longer lists' candidates.
     bool wider = false;
+    int attempt = 0;
+    // Starts the wider look, its attempts counted afresh (false: there is none to make).
     auto widen = [&]
     {
         if (wider || !p.first_group_wider_look || first ||
@@ -985,14 +987,15 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         buildCandidates();
         std::fill(rejected.begin(), rejected.end(), 0);
         maximal_cliques_asked = false;
+        attempt = -1;
         return true;
     };
-    for (int attempt = 0; out.cores.empty(); ++attempt)
+    for (; out.cores.empty(); ++attempt)
     {
         if (attempt >= 2 * p.max_groups)
         {
             if (!widen()) break;
-            attempt = 0;
+            continue;
         }
         std::vector<int> pool;
         for (int i = 0; i < n; ++i)
@@ -1019,7 +1022,6 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (int(clique.size()) < needed())
         {
             if (!widen()) break;
-            attempt = -1;
             continue;
         }
         for (int i : clique) rejected[pairKey(cands[i])] = 1;

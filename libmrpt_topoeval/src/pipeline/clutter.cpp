@@ -35,59 +35,72 @@ struct Island
 /** Calls `judge` for each island of `map_grid`'s cells [x0, x0 + w) x [y0, y0 + h) from
  * min_island_size_m to clutter_max_size_m across (8-connected non-free cells, as the graph
  * builder reads free space, surrounded by free space; one touching the region's edge may go on
- * beyond it and is skipped), and returns those it says are clutter. */
+ * beyond it and is skipped), and returns those it says are clutter. Labelled in overlapping
+ * strips of rows, as the graph builder's removeSmallIslands() does: a whole 10^8-cell map's
+ * label image is 400 MB. An island (at most clutter_max_size_m across) lies whole in the strip
+ * whose core rows hold its top row, and is judged there only. */
 std::vector<std::vector<cv::Point2f>> clutterIslands(
     const mrpt::maps::COccupancyGridMap2D& map_grid, int x0, int y0, int w, int h,
     const Parameters& params, const std::function<bool(const Island&)>& judge)
 {
     const double res = map_grid.getResolution();
+    const double min_cells = params.graph.min_island_size_m / res;
+    const double max_cells = params.matcher.clutter_max_size_m / res;
     // Non-free cells, as the graph builder reads free space (P(occupied) <= free_max_prob).
     using Cell = mrpt::maps::COccupancyGridMap2D::cellType;
     const Cell free_l =
         mrpt::maps::COccupancyGridMap2D::p2l(static_cast<float>(1.0 - params.graph.free_max_prob));
-    cv::Mat solid(h, w, CV_8UC1);
-    for (int y = 0; y < h; ++y)
-    {
-        const Cell* row = map_grid.getRow(y0 + y);
-        auto* out = solid.ptr<std::uint8_t>(y);
-        for (int x = 0; x < w; ++x) out[x] = row[x0 + x] >= free_l ? 0 : 1;
-    }
-    cv::Mat labels, boxes, centroids;
-    const int n = cv::connectedComponentsWithStats(solid, labels, boxes, centroids, 8, CV_32S);
-
-    const double min_cells = params.graph.min_island_size_m / res;
-    const double max_cells = params.matcher.clutter_max_size_m / res;
+    const int overlap = static_cast<int>(std::ceil(max_cells)) + 3;
+    const int core = std::max(256, 4 * overlap);
     std::vector<std::vector<cv::Point2f>> clutter;
     Island island;
-    for (int k = 1; k < n; ++k)
+    for (int c0 = 0; c0 < h; c0 += core)
     {
-        const int bx = boxes.at<int>(k, cv::CC_STAT_LEFT), by = boxes.at<int>(k, cv::CC_STAT_TOP);
-        const int bw = boxes.at<int>(k, cv::CC_STAT_WIDTH),
-                  bh = boxes.at<int>(k, cv::CC_STAT_HEIGHT);
-        if (bx == 0 || by == 0 || bx + bw == w || by + bh == h) continue;  // not surrounded
-        if (std::max(bw, bh) > max_cells + 1.0) continue;  // wider than its enclosing circle
-        island.cells.clear();
-        island.border.clear();
-        for (int y = by; y < by + bh; ++y)
+        // Region rows [top, bottom) of this strip; its core is [c0, c0 + core).
+        const int top = std::max(0, c0 - overlap), bottom = std::min(h, c0 + core + overlap);
+        cv::Mat solid(bottom - top, w, CV_8UC1);
+        for (int y = 0; y < solid.rows; ++y)
         {
-            const int* row = labels.ptr<int>(y);
-            for (int x = bx; x < bx + bw; ++x)
-            {
-                if (row[x] != k) continue;
-                island.cells.emplace_back(static_cast<float>(x), static_cast<float>(y));
-                // A border cell has a free 4-neighbour (the island touches no edge).
-                if (labels.at<int>(y - 1, x) != k || labels.at<int>(y + 1, x) != k ||
-                    labels.at<int>(y, x - 1) != k || labels.at<int>(y, x + 1) != k)
-                    island.border.emplace_back(map_grid.idx2x(x0 + x), map_grid.idx2y(y0 + y));
-            }
+            const Cell* row = map_grid.getRow(y0 + top + y);
+            auto* out = solid.ptr<std::uint8_t>(y);
+            for (int x = 0; x < w; ++x) out[x] = row[x0 + x] >= free_l ? 0 : 1;
         }
-        cv::Point2f centre;
-        const double size = islandWidthCells(island.cells, &centre);
-        // Smaller ones are the graph builder's to remove (min_island_size_m).
-        if (size < min_cells || size > max_cells) continue;
-        island.centre = {map_grid.idx2x(x0 + static_cast<int>(std::lround(centre.x))),
-                         map_grid.idx2y(y0 + static_cast<int>(std::lround(centre.y)))};
-        if (judge(island)) clutter.push_back(island.cells);
+        cv::Mat labels, boxes, centroids;
+        const int n = cv::connectedComponentsWithStats(solid, labels, boxes, centroids, 8, CV_32S);
+        for (int k = 1; k < n; ++k)
+        {
+            const int bx = boxes.at<int>(k, cv::CC_STAT_LEFT),
+                      by = boxes.at<int>(k, cv::CC_STAT_TOP);  // strip rows
+            const int bw = boxes.at<int>(k, cv::CC_STAT_WIDTH),
+                      bh = boxes.at<int>(k, cv::CC_STAT_HEIGHT);
+            if (top + by < c0 || top + by >= c0 + core) continue;  // judged in another strip
+            // Not surrounded: on the region's edge, or going on beyond the strip.
+            if (bx == 0 || by == 0 || bx + bw == w || by + bh == solid.rows) continue;
+            if (std::max(bw, bh) > max_cells + 1.0) continue;  // wider than its enclosing circle
+            island.cells.clear();
+            island.border.clear();
+            for (int y = by; y < by + bh; ++y)
+            {
+                const int* row = labels.ptr<int>(y);
+                for (int x = bx; x < bx + bw; ++x)
+                {
+                    if (row[x] != k) continue;
+                    island.cells.emplace_back(static_cast<float>(x), static_cast<float>(top + y));
+                    // A border cell has a free 4-neighbour (the island touches no edge).
+                    if (labels.at<int>(y - 1, x) != k || labels.at<int>(y + 1, x) != k ||
+                        labels.at<int>(y, x - 1) != k || labels.at<int>(y, x + 1) != k)
+                        island.border.emplace_back(map_grid.idx2x(x0 + x),
+                                                   map_grid.idx2y(y0 + top + y));
+                }
+            }
+            cv::Point2f centre;
+            const double size = islandWidthCells(island.cells, &centre);
+            // Smaller ones are the graph builder's to remove (min_island_size_m).
+            if (size < min_cells || size > max_cells) continue;
+            island.centre = {map_grid.idx2x(x0 + static_cast<int>(std::lround(centre.x))),
+                             map_grid.idx2y(y0 + static_cast<int>(std::lround(centre.y)))};
+            if (judge(island)) clutter.push_back(island.cells);
+        }
     }
     return clutter;
 }

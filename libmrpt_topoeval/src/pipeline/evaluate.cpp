@@ -74,8 +74,12 @@ std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyG
     const GraphMatcherParameters& p = params.matcher;
     if (p.method != MatchMethod::Consistent || p.clutter_passes <= 0) return {};
     // What the first round judges by: the match itself, or that of the map without islands.
-    std::optional<TopologyGraph> start_graph;
-    std::optional<GraphMatch> start_match;
+    struct Start
+    {
+        TopologyGraph graph;
+        GraphMatch match;
+    };
+    std::optional<Start> start;
     std::size_t start_islands = 0;
     if (m.match.pairs.size() < 3 && p.clutter_start_without_islands)
     {
@@ -84,7 +88,7 @@ std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyG
             TopologyGraph graph = buildTopologyGraph(*bare, params.graph);
             Matched bare_match = matchStep(gt, gt_grid, graph, *bare, params);
             if (bare_match.match.pairs.size() >= 3)
-                start_graph = std::move(graph), start_match = std::move(bare_match.match);
+                start = Start{std::move(graph), std::move(bare_match.match)};
         }
     }
     std::optional<mrpt::maps::COccupancyGridMap2D> current;  // the map as edited so far
@@ -93,11 +97,11 @@ std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyG
     int passes = 0;
     for (int pass = 0; pass < p.clutter_passes; ++pass)
     {
-        const bool from_start = pass == 0 && start_match;
+        const bool from_start = pass == 0 && start;
         std::size_t removed = 0, judged = 0;
         auto edited = internal::withoutClutter(
-            gt, from_start ? *start_graph : map, current ? *current : map_grid,
-            from_start ? *start_match : m.match, params, removed, judged);
+            gt, from_start ? start->graph : map, current ? *current : map_grid,
+            from_start ? start->match : m.match, params, removed, judged);
         if (!edited) break;
         // Is the map furnished where its ground truth is not? A ground truth drawn from a robot
         // map holds the same furniture; the few islands it lacks are noise and not worth a
@@ -117,8 +121,8 @@ std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyG
                        " free-standing obstacle(s) of the map that the ground truth lacks where "
                        "the match puts them made free and the map matched again (" +
                        std::to_string(passes) + " pass(es)";
-    if (start_match)
-        text += "; judged first by the " + std::to_string(start_match->pairs.size()) +
+    if (start)
+        text += "; judged first by the " + std::to_string(start->match.pairs.size()) +
                 " pairs of the map with all its " + std::to_string(start_islands) +
                 " islands freed, as its own match paired fewer than 3";
     return text + "): " + std::to_string(first_pairs) + " -> " +
