@@ -90,6 +90,75 @@ double CaseScore::pairTolerance(const TopoVertex& g, const TopoVertex& m)
     return std::max(0.5, 0.5 * std::max(g.clearance_m, m.clearance_m));
 }
 
+LostVertices& LostVertices::operator+=(const LostVertices& o)
+{
+    vertices += o.vertices;
+    dead_end_moved += o.dead_end_moved;
+    dead_end_absent += o.dead_end_absent;
+    junction_with_dead_end += o.junction_with_dead_end;
+    junction_moved += o.junction_moved;
+    junction_absent += o.junction_absent;
+    narrow_tips += o.narrow_tips;
+    narrow_tips_lost += o.narrow_tips_lost;
+    wide_tips += o.wide_tips;
+    wide_tips_lost += o.wide_tips_lost;
+    return *this;
+}
+
+namespace
+{
+/** The causes of LostVertices for the ground-truth vertices without a counterpart
+ * (`has_counterpart`), from the truth places of the map's vertices (`places`, the first the
+ * most likely). */
+LostVertices lostVertices(const TopologyGraph& gt, const TopologyGraph& map,
+                          const std::vector<std::vector<std::pair<int, Eigen::Vector2d>>>& places,
+                          const std::vector<char>& has_counterpart)
+{
+    LostVertices lost;
+    auto lostAt = [&](int id) { return !has_counterpart[static_cast<std::size_t>(id)]; };
+    // A map vertex of the kind (dead end or not) within kLostNearM of where g is.
+    auto nearOfItsKind = [&](const TopoVertex& g)
+    {
+        const bool dead_end = g.degree() == 1;
+        for (const auto& m : map.vertices)
+        {
+            if (m.spurious || (m.degree() == 1) != dead_end) continue;
+            for (const auto& [part, q] : places[static_cast<std::size_t>(m.id)])
+                if ((q - g.position_m).norm() <= kLostNearM) return true;
+        }
+        return false;
+    };
+    for (const auto& g : gt.vertices)
+    {
+        if (g.spurious) continue;
+        ++lost.vertices;
+        const bool is_lost = lostAt(g.id);
+        if (g.degree() == 1)
+        {
+            const bool narrow = g.clearance_m < kNarrowTipM;
+            ++(narrow ? lost.narrow_tips : lost.wide_tips);
+            if (!is_lost) continue;
+            ++(narrow ? lost.narrow_tips_lost : lost.wide_tips_lost);
+            ++(nearOfItsKind(g) ? lost.dead_end_moved : lost.dead_end_absent);
+            continue;
+        }
+        if (!is_lost) continue;
+        bool dead_end_lost = false;
+        for (const auto& inc : g.ring)
+        {
+            const auto& other = gt.vertices[static_cast<std::size_t>(inc.other_vertex)];
+            dead_end_lost |=
+                other.id != g.id && other.degree() == 1 && !other.spurious && lostAt(other.id);
+        }
+        if (g.degree() == 3 && dead_end_lost)
+            ++lost.junction_with_dead_end;  // without that branch, a bend of a corridor
+        else
+            ++(nearOfItsKind(g) ? lost.junction_moved : lost.junction_absent);
+    }
+    return lost;
+}
+}  // namespace
+
 CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const QualityReport& report,
                     const Truth& truth)
 {
@@ -137,6 +206,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
         return kNotTrue;
     };
     std::map<int, int> counterparts_per_part;
+    std::vector<char> has_counterpart(gt.vertices.size(), 0);
     for (const auto& g : gt.vertices)
     {
         if (g.spurious) continue;
@@ -152,6 +222,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                                           ", matched to " + std::to_string(partner) + ")");
             if (truth.part_of) ++counterparts_per_part[by];
             found = true;
+            has_counterpart[static_cast<std::size_t>(g.id)] = 1;
             break;
         }
         // For the pictures: a vertex whose walls a part keeps whole, that the map's graph lost.
@@ -161,6 +232,8 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                                           std::to_string(part) +
                                           ": no counterpart in the map's graph");
     }
+    if (!truth.different_building && truth.mapping && !truth.kept && !truth.part_of)
+        s.lost = lostVertices(gt, map, places, has_counterpart);
     std::map<int, int> true_per_part;
     for (const auto& p : report.match.pairs)
     {

@@ -42,6 +42,37 @@ TruthCheck checkTruth(const mrpt::maps::COccupancyGridMap2D& gt,
 double mapDistortion(const mrpt::maps::COccupancyGridMap2D& map, const Truth& truth,
                      int stride = 3);
 
+/** Ground-truth vertices that a map of the whole place lost in its graph, by what the map's
+ * graph has near where the truth puts them (doc/validation.md, "Measures", "graph
+ * stability"): what changes a Topology Graph between two maps of one place (issue 11, item 1).
+ * A vertex is lost when no map vertex lies within CaseScore::pairTolerance() of it. */
+struct LostVertices
+{
+    std::size_t vertices = 0;  //!< Non-spurious ground-truth vertices looked at.
+    /** Dead ends (degree 1): a non-spurious map dead end within kLostNearM of it, but beyond
+     * the tolerance (its tip stops elsewhere), or none. */
+    std::size_t dead_end_moved = 0, dead_end_absent = 0;
+    /** Junctions (degree 3 or more; degree 2 on a loop with no junction): one of its dead ends
+     * lost too, so that the map's graph has no branch to make it a junction; else a map
+     * junction within kLostNearM, or none. */
+    std::size_t junction_with_dead_end = 0, junction_moved = 0, junction_absent = 0;
+    /** Every non-spurious ground-truth dead end, by the clearance at its tip (below
+     * kNarrowTipM: a branch the clearance filter cut, not a wall), and of those the lost. */
+    std::size_t narrow_tips = 0, narrow_tips_lost = 0, wide_tips = 0, wide_tips_lost = 0;
+    std::size_t lost() const
+    {
+        return dead_end_moved + dead_end_absent + junction_with_dead_end + junction_moved +
+               junction_absent;
+    }
+    LostVertices& operator+=(const LostVertices& o);
+};
+/** A lost vertex "moved" when the map's graph has one of its kind this near [m]: four times
+ * the smallest pair tolerance, a room's or a corridor's width; farther is another place. */
+constexpr double kLostNearM = 2.0;
+/** A dead end's tip is narrow below this clearance [m]: within 0.2 m of the graph's
+ * min_clearance_m (0.3 m), where a branch ends because the clearance filter cut it. */
+constexpr double kNarrowTipM = 0.5;
+
 /** Broken maps: one injected part (Truth::part_of), its turn, and how much of it the match has. */
 struct PartScore
 {
@@ -83,6 +114,10 @@ struct CaseScore
      * vertex that a part keeps whole (Truth::kept_part) without a counterpart: "gt G kept whole
      * by part P: no counterpart in the map's graph". */
     std::vector<std::string> counterpart_lines;
+    /** The ground-truth vertices without a counterpart, by cause; counted when the truth
+     * places the map's vertices and keeps the whole ground truth (no crop, no broken map, no
+     * other building: there a vertex may be lost by the variant, not by the graph). */
+    LostVertices lost;
     /** The match's and the evaluation's messages (why nothing matched, what was refused). */
     std::vector<std::string> messages;
     double precision = 0.0;  //!< true / matched (NaN when nothing was matched).

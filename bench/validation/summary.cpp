@@ -146,6 +146,7 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
         a.true_pairs += s.true_pairs;
         if (s.matched == s.true_pairs) ++a.clean;
         a.counterparts += std::max(s.gt_with_counterpart, s.true_pairs);
+        a.lost += s.lost;
         if (s.brokenness_injected >= 0 && r->spec.kind == "broken")
         {
             ++a.broken;
@@ -409,6 +410,32 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
                 a.crop_kept);
             line("by counterparts in the map's graph (before session 29)", a.crop_counterparts);
         }
+    // What changes the graph between two maps of one place (issue 11, item 1).
+    o << "\ngraph stability: ground-truth vertices with no counterpart in the map's graph, by what "
+         "the map's graph has within "
+      << num(kLostNearM, 1)
+      << " m of where the truth puts them; dead ends lost by their tip's clearance (narrow: "
+         "under "
+      << num(kNarrowTipM, 2)
+      << " m)\nkind        vertices  lost  dead end: moved absent  junction: with its dead end "
+         "moved absent  dead ends lost: narrow tips  wide tips\n";
+    for (const auto& a : s.kinds)
+    {
+        const LostVertices& l = a.lost;
+        if (l.vertices == 0) continue;
+        auto share = [](std::size_t n, std::size_t of)
+        {
+            return std::to_string(n) + " of " + std::to_string(of) + " (" +
+                   num(of ? static_cast<double>(n) / static_cast<double>(of) : kNaN) + ")";
+        };
+        char buf[300];
+        std::snprintf(buf, sizeof buf, "%-11s %8zu %5zu %16zu %6zu %28zu %5zu %6zu  %26s  %s\n",
+                      a.name.c_str(), l.vertices, l.lost(), l.dead_end_moved, l.dead_end_absent,
+                      l.junction_with_dead_end, l.junction_moved, l.junction_absent,
+                      share(l.narrow_tips_lost, l.narrow_tips).c_str(),
+                      share(l.wide_tips_lost, l.wide_tips).c_str());
+        o << buf;
+    }
     o << "\nreal pairs           truth  matched   true  prec recall counterp  cov  quality broken"
          "  time_ms\n";
     for (const auto& r : results)

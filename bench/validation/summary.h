@@ -54,6 +54,9 @@ struct Aggregate
     std::size_t clean = 0;  //!< Cases scored without an error and without a false pair.
     double precision() const;
     double recall() const;
+    /** Ground-truth vertices lost in the map's graph, by cause, over the cases that count them
+     * (CaseScore::lost). */
+    LostVertices lost;
     std::size_t broken = 0, broken_exact = 0;  //!< Cases with injected breaks, found exactly.
     /** Broken cases whose every part holds 5 ground-truth vertices with a counterpart (so a
      * 5-vertex group could be made in each), and of those the ones found exactly. */

@@ -211,6 +211,25 @@ std::string casesCsv(const std::vector<CaseResult>& results)
     return o.str();
 }
 
+/** The object "lost": CaseScore::lost (doc/validation.md, "Measures", "graph stability"). */
+void lostJson(JsonWriter& j, const LostVertices& l)
+{
+    auto n = [](std::size_t v) { return static_cast<std::uint64_t>(v); };
+    j.key("lost").beginObject();
+    j.key("vertices").value(n(l.vertices));
+    j.key("lost").value(n(l.lost()));
+    j.key("dead_end_moved").value(n(l.dead_end_moved));
+    j.key("dead_end_absent").value(n(l.dead_end_absent));
+    j.key("junction_with_dead_end").value(n(l.junction_with_dead_end));
+    j.key("junction_moved").value(n(l.junction_moved));
+    j.key("junction_absent").value(n(l.junction_absent));
+    j.key("narrow_tips").value(n(l.narrow_tips));
+    j.key("narrow_tips_lost").value(n(l.narrow_tips_lost));
+    j.key("wide_tips").value(n(l.wide_tips));
+    j.key("wide_tips_lost").value(n(l.wide_tips_lost));
+    j.endObject();
+}
+
 std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum,
                       const Options& opt, const std::vector<std::string>& notes)
 {
@@ -258,6 +277,7 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
             j.key("max_observable_error").value(c.max_observable, 4);
             j.endObject();
         };
+        if (a.lost.vertices) lostJson(j, a.lost);
         if (a.crop_kept.crops)
         {
             crop("crop_kept", a.crop_kept);
@@ -343,6 +363,7 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("false_core").value(s.false_core);
         j.key("false_grown").value(s.false_grown);
         j.key("max_group_rotation_error_deg").value(s.max_group_rotation_error_deg, 2);
+        if (s.lost.vertices) lostJson(j, s.lost);
         if (!s.parts.empty())
         {
             j.key("broken_cause").value(brokenCause(s));
