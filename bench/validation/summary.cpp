@@ -417,25 +417,28 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
       << " m of where the truth puts them; dead ends lost by their tip's clearance (narrow: "
          "under "
       << num(kNarrowTipM, 2)
-      << " m)\nkind        vertices  lost  dead end: moved absent  junction: with its dead end "
+      << " m); per kind, then per family over those kinds\n"
+         "kind or family   vertices  lost  dead end: moved absent  junction: with its dead end "
          "moved absent  dead ends lost: narrow tips  wide tips\n";
-    for (const auto& a : s.kinds)
+    auto share = [](std::size_t n, std::size_t of)
+    {
+        return std::to_string(n) + " of " + std::to_string(of) + " (" +
+               num(of ? static_cast<double>(n) / static_cast<double>(of) : kNaN) + ")";
+    };
+    auto lostRow = [&](const Aggregate& a)
     {
         const LostVertices& l = a.lost;
-        if (l.vertices == 0) continue;
-        auto share = [](std::size_t n, std::size_t of)
-        {
-            return std::to_string(n) + " of " + std::to_string(of) + " (" +
-                   num(of ? static_cast<double>(n) / static_cast<double>(of) : kNaN) + ")";
-        };
+        if (l.vertices == 0) return;
         char buf[300];
-        std::snprintf(buf, sizeof buf, "%-11s %8zu %5zu %16zu %6zu %28zu %5zu %6zu  %26s  %s\n",
+        std::snprintf(buf, sizeof buf, "%-16s %8zu %5zu %16zu %6zu %28zu %5zu %6zu  %26s  %s\n",
                       a.name.c_str(), l.vertices, l.lost(), l.dead_end_moved, l.dead_end_absent,
                       l.junction_with_dead_end, l.junction_moved, l.junction_absent,
                       share(l.narrow_tips_lost, l.narrow_tips).c_str(),
                       share(l.wide_tips_lost, l.wide_tips).c_str());
         o << buf;
-    }
+    };
+    for (const auto& a : s.kinds) lostRow(a);
+    for (const auto& a : s.families) lostRow(a);
     o << "\nreal pairs           truth  matched   true  prec recall counterp  cov  quality broken"
          "  time_ms\n";
     for (const auto& r : results)
