@@ -477,6 +477,9 @@ TEST(QualityEvaluator, TheMatchsGroupsAreTheBrokennessCandidates)
     without.quality.brokenness_from_match_groups = false;
     // The growth alone (session 28's walls then count the compromise's leftover as a part).
     without.quality.brokenness_part_wall_ratio = 0.0;
+    // The compromise's turn by its vertices: its walls, most of them part 1's, vouch for part
+    // 1's turn (0.05 degrees off) once the vertices' test refuses them (brokenness_walls_vouch).
+    without.quality.brokenness_walls_vouch = false;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
     EXPECT_EQ(r.brokenness.degree, 1);
@@ -511,6 +514,35 @@ TEST(QualityEvaluator, AVertexAtACutGoesToThePartThatPlacesItBest)
     for (const auto& g : r0.brokenness.groups)
         worst = std::max(worst, nearestTurn(g, turns).second);
     EXPECT_GT(worst, 1.0);
+}
+
+// A small part's turn from its walls where its vertices' fit refuses them
+// (brokenness_walls_vouch): held-out ring_13001/broken_2 (tests/data/match_groups), three parts
+// turned -27.76, 2.20 and -53.83 degrees. Part 0's group holds 5 vertices near its cuts, which
+// slid with the cuts' walls: their fit turns it -32.99 degrees. Its walls turn it -27.84, but
+// the vertices' squared error rises from 0.10 to 0.60 m^2, beyond their 95 % confidence region
+// (which takes their own small residual for their noise). The walls agree under that turn and
+// pin it: the group is reported at its part's turn. The groups and the match are the same.
+TEST(QualityEvaluator, ASmallPartsWallsVouchForItsTurn)
+{
+    const auto [gt, map] = corpusCase("match_groups", "ring_13001_broken_2");
+    const std::vector<double> turns = {-27.76, 2.20, -53.83};
+    Parameters with = Parameters{}, without = Parameters{};
+    without.quality.brokenness_walls_vouch = false;
+    const QualityReport r = evaluate(gt, map, with);
+    const QualityReport r0 = evaluate(gt, map, without);
+    EXPECT_EQ(r.brokenness.degree, 2);
+    EXPECT_EQ(partsOfGroups(r, turns), (std::set<int>{0, 1, 2}));
+    for (const auto& g : r.brokenness.groups)
+        EXPECT_LT(nearestTurn(g, turns).second, 0.2) << g.transform.yaw_deg;
+    double worst = 0.0;
+    for (const auto& g : r0.brokenness.groups)
+        worst = std::max(worst, nearestTurn(g, turns).second);
+    EXPECT_GT(worst, 3.0);  // the validator's "a group turned wrong"
+    ASSERT_EQ(r.brokenness.groups.size(), r0.brokenness.groups.size());
+    for (std::size_t i = 0; i < r.brokenness.groups.size(); ++i)
+        EXPECT_EQ(r.brokenness.groups[i].gt_vertices, r0.brokenness.groups[i].gt_vertices);
+    EXPECT_EQ(r.match.pairs.size(), r0.match.pairs.size());
 }
 
 // A small part that its walls set apart counts (brokenness_part_wall_ratio). Standard corpus

@@ -51,6 +51,8 @@ TOPOEVAL_PARAMETER_TABLE(
     real(TOPOEVAL_KEY(brokenness_wall_margin_m), "m",
          "a group's turn refined by ICP of the walls within clearance + this (0 = paper)",
          atLeast(0)),
+    flag(TOPOEVAL_KEY(brokenness_walls_vouch),
+         "... also kept where the vertices' test refuses it but the walls agree and pin it"),
     flag(TOPOEVAL_KEY(brokenness_merge_by_walls),
          "groups that the walls' transforms place alike are one part (needs the margin above)"),
     real(TOPOEVAL_KEY(pair_wall_margin_m), "m",

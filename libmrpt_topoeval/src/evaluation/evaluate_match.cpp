@@ -179,7 +179,22 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     if (sse_walls / n > p.brokenness_max_squared_error_m2) return fit;
     const int dof = 2 * static_cast<int>(pairs.size()) - 3;
     if (dof < 1) return fit;
-    return (sse_walls - sse_fit) / 3.0 <= f3Quantile95(dof) * sse_fit / double(dof) ? t : fit;
+    if ((sse_walls - sse_fit) / 3.0 <= f3Quantile95(dof) * sse_fit / double(dof)) return t;
+    if (!p.brokenness_walls_vouch) return fit;
+    // The test took the vertices' residual for their noise; a small part's vertices near its
+    // cut slide with the cut's walls and their fit turns to absorb it. The walls vouch for
+    // their transform when they agree under it, as well as under the vertices' fit at least,
+    // and pin it (a corridor's walls that slid along it do not).
+    const double tolerance = internal::pairWallTolerance(gt, map, p);
+    const internal::WallAgreement by_walls =
+        internal::wallAgreement(gt, map, gt_walls, map_walls, pairs, t, p.brokenness_wall_margin_m,
+                                tolerance, p.pair_wall_min_agreement, p.pair_wall_max_pinning);
+    if (!by_walls.walls_on_both || by_walls.share < p.pair_wall_min_agreement ||
+        by_walls.pinning > p.pair_wall_max_pinning)
+        return fit;
+    const internal::WallAgreement by_fit = internal::wallAgreement(
+        gt, map, gt_walls, map_walls, pairs, fit, p.brokenness_wall_margin_m, tolerance, 2.0);
+    return by_walls.share >= by_fit.share ? t : fit;
 }
 
 // Paper IV, brokenness: grow groups of connected matched vertices by wavefront while their

@@ -82,6 +82,15 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
      * vertices within brokenness_max_squared_error_m2. Membership is decided before, by the
      * vertices alone (then brokenness_merge_by_walls). 0 = the paper's vertex fit [m]. */
     double brokenness_wall_margin_m = 1.0;
+    /** The walls' transform is also kept where the vertices' 95 % confidence test refuses it
+     * but the walls vouch for it: under it at least pair_wall_min_agreement of the walls
+     * around the group agree, no less than under the vertices' fit, and they pin it
+     * (pair_wall_max_pinning). The test trusts the vertices' own residual as their noise;
+     * a small part's few vertices near its cut slide 0.3-0.4 m with the cut's walls, their
+     * fit absorbs it into a turn 3-6 degrees off, and its small residual then refuses the
+     * walls that place the part right (doc/quality.md, brokenness step 7). false = the test
+     * alone decides [bool]. */
+    bool brokenness_walls_vouch = true;
     /** After that refinement, two groups whose walls' transforms put their vertices in the
      * same places (step 5's merge test, within brokenness_max_squared_error_m2, applied to the
      * walls' transforms) are one part: merged when the whole's vertex fit stays within that
