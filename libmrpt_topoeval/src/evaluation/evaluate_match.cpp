@@ -161,11 +161,11 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
                                                 p.brokenness_wall_margin_m, fit, p);
     if (!walls_fit) return fit;
     const Transform2D& t = *walls_fit;
-    // The walls' transform replaces the vertices' fit only where the vertices do not reject
-    // it: inside the fit's 95 % confidence region (an F test of the rise in the vertices'
-    // squared error, 3 parameters of a rigid fit against 2n - 3 degrees of freedom left), and
-    // within the group's threshold. Walls that slid along a corridor, or that disagree with
-    // the vertices, leave the fit as it is.
+    // The walls' transform replaces the vertices' fit within the group's threshold, and where
+    // the vertices do not reject it: inside the fit's 95 % confidence region (an F test of the
+    // rise in the vertices' squared error, 3 parameters of a rigid fit against 2n - 3 degrees
+    // of freedom left), or where the walls vouch for it (brokenness_walls_vouch, below). Walls
+    // that slid along a corridor, or that disagree with the vertices, leave the fit as it is.
     auto sse = [&](const Transform2D& x)
     {
         double sum = 0.0;
@@ -192,6 +192,7 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     if (!by_walls.walls_on_both || by_walls.share < p.pair_wall_min_agreement ||
         by_walls.pinning > p.pair_wall_max_pinning)
         return fit;
+    // Its share only (a share never reaches 2: no pinning asked).
     const internal::WallAgreement by_fit = internal::wallAgreement(
         gt, map, gt_walls, map_walls, pairs, fit, p.brokenness_wall_margin_m, tolerance, 2.0);
     return by_walls.share >= by_fit.share ? t : fit;
