@@ -210,7 +210,6 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     for (const auto& g : gt.vertices)
     {
         if (g.spurious) continue;
-        bool found = false;
         for (const auto& m : map.vertices)
         {
             const int by = m.spurious ? kNotTrue : trueBy(g.id, m.id);
@@ -221,13 +220,12 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                                           std::to_string(m.id) + " (part " + std::to_string(by) +
                                           ", matched to " + std::to_string(partner) + ")");
             if (truth.part_of) ++counterparts_per_part[by];
-            found = true;
             has_counterpart[static_cast<std::size_t>(g.id)] = 1;
             break;
         }
         // For the pictures: a vertex whose walls a part keeps whole, that the map's graph lost.
         const int part = kept_part[static_cast<std::size_t>(g.id)];
-        if (!found && part >= 0)
+        if (!has_counterpart[static_cast<std::size_t>(g.id)] && part >= 0)
             s.counterpart_lines.push_back("gt " + std::to_string(g.id) + " kept whole by part " +
                                           std::to_string(part) +
                                           ": no counterpart in the map's graph");

@@ -189,8 +189,8 @@ Transform2D refinedByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     const internal::WallAgreement by_walls =
         internal::wallAgreement(gt, map, gt_walls, map_walls, pairs, t, p.brokenness_wall_margin_m,
                                 tolerance, p.pair_wall_min_agreement, p.pair_wall_max_pinning);
-    if (!by_walls.walls_on_both || by_walls.share < p.pair_wall_min_agreement ||
-        by_walls.pinning > p.pair_wall_max_pinning)
+    if (!by_walls.walls_on_both ||
+        !by_walls.vouches(p.pair_wall_min_agreement, p.pair_wall_max_pinning))
         return fit;
     // Its share only (a share never reaches 2: no pinning asked).
     const internal::WallAgreement by_fit = internal::wallAgreement(

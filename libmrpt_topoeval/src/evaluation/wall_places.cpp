@@ -55,9 +55,7 @@ void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const Graph
         const WallAgreement agreement =
             wallAgreement(gt, map, gt_walls, map_walls, pair, *walls_fit, p.pair_wall_margin_m,
                           tolerance, p.pair_wall_min_agreement);
-        if (agreement.share < p.pair_wall_min_agreement ||
-            agreement.pinning > p.pair_wall_max_pinning)
-            continue;
+        if (!agreement.vouches(p.pair_wall_min_agreement, p.pair_wall_max_pinning)) continue;
         places[i] = q;
         slack[i] = 0.0;
         ++by_walls;

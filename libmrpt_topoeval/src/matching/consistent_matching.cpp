@@ -353,7 +353,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
     // Walls that agree on at least `min_share` of their length and pin the fit
     // (max_wall_pinning). A share is 0 where either map has no walls.
     auto agreeOnAndPin = [&](const WallAgreement& w, double min_share)
-    { return w.share >= min_share && w.pinning <= p.max_wall_pinning; };
+    { return w.vouches(min_share, p.max_wall_pinning); };
     // The small part's wall test (also a grown pair's that only its walls vouch for).
     auto agreeAndPin = [&](const WallAgreement& w)
     { return agreeOnAndPin(w, p.min_part_wall_agreement); };

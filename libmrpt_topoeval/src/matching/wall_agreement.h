@@ -113,6 +113,12 @@ struct WallAgreement
     /** Whether both maps have wall points around the group (else share is 0 for want of walls,
      * not for walls that disagree). */
     bool walls_on_both = false;
+    /** The walls vouch for the fit: they agree on at least `min_share` of their length and pin
+     * it (a pinning of at most `max_pinning`). */
+    bool vouches(double min_share, double max_pinning) const
+    {
+        return share >= min_share && pinning <= max_pinning;
+    }
 };
 
 /** The agreement of the walls around `pairs` (ground-truth vertex, map vertex) under
