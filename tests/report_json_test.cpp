@@ -77,7 +77,7 @@ QualityReport tinyReport()
     r.brokenness.degree = 1;
     r.brokenness.score = 0.5;
     r.brokenness.groups = {{{2, 0, 1}, 0.0123456789, {0.1, -0.2, -69.5}},
-                           {{3}, 0.2, {0.0, 0.0, 21.8}}};
+                           {{3}, 0.2, {0.0, 0.0, 21.8}, 1.23456789}};
     r.quality = 0.6543219;
     r.messages = {"a \"quoted\" note"};
     r.timing_ms = {{"similarity", 0.5}, {"total", 1.25}};
@@ -170,7 +170,8 @@ const char* const kTinyJsonHead = R"({
         "squared_error_m2": 0.012346,
         "yaw_deg": -69.5,
         "x": 0.1,
-        "y": -0.2
+        "y": -0.2,
+        "offset_m": 0
       },
       {
         "vertices": 1,
@@ -178,7 +179,8 @@ const char* const kTinyJsonHead = R"({
         "squared_error_m2": 0.2,
         "yaw_deg": 21.8,
         "x": 0,
-        "y": 0
+        "y": 0,
+        "offset_m": 1.2346
       }
     ]
   },

@@ -310,10 +310,24 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     s.quality = report.quality;
     s.relative_rmse_m = report.relative_accuracy.rmse_m;
     s.brokenness_found = report.brokenness.degree;
+    for (std::size_t i = 1; i < report.brokenness.groups.size(); ++i)
+        s.break_offsets_m.push_back(report.brokenness.groups[i].offset_m);
     s.brokenness_injected = truth.injected_breaks;
     s.max_group_rotation_error_deg = nan;
     if (truth.part_of && !truth.part_yaw_deg.empty() && !report.brokenness.groups.empty())
     {
+        // Each part's true transform (T_gt_map), fitted to where the truth places the map
+        // vertices of that part: the truth of a group's offset.
+        std::map<int, std::pair<std::vector<Eigen::Vector2d>, std::vector<Eigen::Vector2d>>>
+            part_points;
+        for (const auto& m : map.vertices)
+            for (const auto& [part, q] : places[static_cast<std::size_t>(m.id)])
+                if (part >= 0)
+                    part_points[part].first.push_back(q),
+                        part_points[part].second.push_back(m.position_m);
+        std::map<int, Transform2D> part_fit;
+        for (const auto& [part, pts] : part_points)
+            if (pts.first.size() >= 3) part_fit[part] = internal::hornAlign(pts.first, pts.second);
         double worst = 0.0;
         for (const auto& group : report.brokenness.groups)
         {
@@ -332,6 +346,31 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                 if (k >= 0 && n > best) part = k, best = n;
             GroupScore g{group.transform.yaw_deg, {}, part};
             for (const auto& [k, n] : votes) g.vertices_per_part[k] = static_cast<std::size_t>(n);
+            g.offset_m = group.offset_m;
+            if (!s.groups.empty())
+            {
+                // As BrokennessGroup::offset_m, each part's true fit in place of the groups'.
+                g.true_offset_m = std::numeric_limits<double>::quiet_NaN();
+                const auto own = part_fit.find(part);
+                double nearest = std::numeric_limits<double>::infinity();
+                for (const GroupScore& larger : s.groups)
+                {
+                    const auto other = part_fit.find(larger.part);
+                    if (own == part_fit.end() || other == part_fit.end()) continue;
+                    double sum = 0.0;
+                    std::size_t n = 0;
+                    for (int v : group.gt_vertices)
+                        if (const int m = report.match.mapVertexOf(v); m >= 0)
+                        {
+                            const Eigen::Vector2d q =
+                                map.vertices[static_cast<std::size_t>(m)].position_m;
+                            sum += (own->second.apply(q) - other->second.apply(q)).squaredNorm();
+                            ++n;
+                        }
+                    if (n) nearest = std::min(nearest, sum / double(n));
+                }
+                if (std::isfinite(nearest)) g.true_offset_m = std::sqrt(nearest);
+            }
             s.groups.push_back(std::move(g));
             if (part < 0) continue;
             const double err = std::remainder(

@@ -89,6 +89,11 @@ struct GroupScore
     double yaw_deg = 0.0;
     std::map<int, std::size_t> vertices_per_part;
     int part = -1;  //!< The part most of its vertices lie in (-1: none).
+    /** Every group but the largest: how far the report says its part is off
+     * (BrokennessGroup::offset_m), and how far the truth says: the same measure with each
+     * part's own transform, fitted to where the truth places that part's map vertices (NaN
+     * when a group has no part). 0 for the largest group [m]. */
+    double offset_m = 0.0, true_offset_m = 0.0;
 };
 
 /** The figures of one case. Counts are of non-spurious vertices. */
@@ -123,6 +128,8 @@ struct CaseScore
     double precision = 0.0;  //!< true / matched (NaN when nothing was matched).
     double recall = 0.0;     //!< true / gt_with_counterpart (NaN when there is no counterpart).
     int brokenness_found = 0;
+    /** Each found break's size: the offset_m of every brokenness group but the largest [m]. */
+    std::vector<double> break_offsets_m;
     int brokenness_injected = -1;
     /** Broken maps: parts with at least 3 and at least 5 true pairs (how many groups a
      * brokenness measure could find from this match); -1 when not broken. */

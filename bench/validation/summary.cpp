@@ -20,6 +20,13 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
  * group's rotation is within this of its part's (issue 11's "each group's rotation within 3
  * degrees") [deg]. */
 constexpr double kExactRotationErrorDeg = 3.0;
+/** A found part's offset (BrokennessGroup::offset_m) is right when within the larger of this
+ * [m] (half the pair tolerance of the generated maps' vertices) ... */
+constexpr double kOffsetToleranceM = 0.25;
+/** ... and this share of the truth's offset (a part's turn fitted 0.5 degrees off moves its far
+ * vertices by about 1 % of their distance from the pivot; 10 % leaves room for the vertices'
+ * own jitter) [ratio]. */
+constexpr double kOffsetToleranceShare = 0.10;
 
 /** Issue 11: the right number of breaks, and each group turned as its part is. */
 bool exactlyRight(const CaseScore& s)
@@ -174,6 +181,14 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
             if (std::isfinite(s.max_group_rotation_error_deg))
                 a.max_rotation_error_deg =
                     std::max(a.max_rotation_error_deg, s.max_group_rotation_error_deg);
+            for (std::size_t g = 1; g < s.groups.size(); ++g)
+                if (const double truth = s.groups[g].true_offset_m; std::isfinite(truth))
+                {
+                    const double err = std::abs(s.groups[g].offset_m - truth);
+                    a.offset_errors_m.push_back(err);
+                    a.offsets_within +=
+                        err <= std::max(kOffsetToleranceM, kOffsetToleranceShare * truth) ? 1 : 0;
+                }
         }
         a.mean_coverage += s.coverage;
         a.max_coverage = std::max(a.max_coverage, s.coverage);
@@ -379,6 +394,17 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
             for (std::size_t k = 0; k < a.broken_kept_graph_lost.size(); ++k)
                 o << (k ? ", " : ": ") << a.broken_kept_graph_lost[k];
             o << "\n";
+            if (!a.offset_errors_m.empty())
+            {
+                std::vector<double> e = a.offset_errors_m;
+                std::sort(e.begin(), e.end());
+                o << "broken, how far each found part is off (brokenness groups' offset_m) against "
+                     "the truth's: "
+                  << e.size() << " groups, |error| median " << num(e[(e.size() - 1) / 2], 3)
+                  << " m, max " << num(e.back(), 3) << " m; within the larger of "
+                  << num(kOffsetToleranceM, 2) << " m and " << num(100 * kOffsetToleranceShare, 0)
+                  << " %: " << a.offsets_within << " of " << e.size() << "\n";
+            }
         }
     for (const auto& a : s.kinds)
         if (a.name == "broken" && !a.broken_causes.empty())

@@ -70,6 +70,11 @@ struct Aggregate
     std::size_t broken_kept = 0, broken_kept_exact = 0;
     std::vector<std::string> broken_kept_graph_lost;
     double max_rotation_error_deg = 0.0;  //!< Over every group of every broken case.
+    /** Over every group but the largest of every broken case whose parts the truth places:
+     * |offset_m - true_offset_m| (how far the report and the truth say its part is off). */
+    std::vector<double> offset_errors_m;
+    /** ... and how many are within the larger of 0.25 m and 10 % of the truth (summary.cpp). */
+    std::size_t offsets_within = 0;
     /** Broken cases not exactly right, by brokenCause(). */
     std::map<std::string, std::size_t> broken_causes;
     double mean_coverage = 0.0, max_coverage = 0.0, mean_quality = 0.0;

@@ -355,6 +355,9 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("relative_rmse_m").value(s.relative_rmse_m, 4);
         j.key("brokenness_injected").value(s.brokenness_injected);
         j.key("brokenness_found").value(s.brokenness_found);
+        j.key("break_offsets_m").beginArray(true);
+        for (const double o : s.break_offsets_m) j.value(o, 3);
+        j.endArray();
         j.key("parts_with_3_pairs").value(s.parts_with_3_pairs);
         j.key("parts_with_5_pairs").value(s.parts_with_5_pairs);
         j.key("parts_with_5_counterparts").value(s.parts_with_5_counterparts);
@@ -384,6 +387,8 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
                 j.beginObject();
                 j.key("yaw_deg").value(g.yaw_deg, 2);
                 j.key("part").value(g.part);
+                j.key("offset_m").value(g.offset_m, 3);
+                j.key("true_offset_m").value(g.true_offset_m, 3);
                 j.key("vertices_per_part").beginObject();
                 for (const auto& [part, n] : g.vertices_per_part)
                     j.key(std::to_string(part)).value(static_cast<std::uint64_t>(n));

@@ -41,6 +41,10 @@ struct BrokennessGroup
     std::vector<int> gt_vertices;   //!< Ground-truth vertex ids, in the order they joined.
     double squared_error_m2 = 0.0;  //!< Mean squared alignment error [m^2].
     Transform2D transform;          //!< The group's T_gt_map.
+    /** How far this part is off: the root mean square, over its vertices' partners q, of
+     * |T(q) - T'(q)|, T this group's transform and T' the larger group's that places them
+     * nearest [m]. 0 for the largest group. */
+    double offset_m = 0.0;
 };
 
 /** Brokenness (paper IV): how many locally consistent parts are misplaced against each other. */

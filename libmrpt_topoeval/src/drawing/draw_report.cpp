@@ -151,7 +151,8 @@ mrpt::img::CImage drawQualityReport(const Grid& gt_grid, const TopologyGraph& gt
         const BrokennessGroup& g = r.brokenness.groups[gi];
         groups.push_back({"group " + std::to_string(gi) + ": " +
                               std::to_string(g.gt_vertices.size()) + " vertices, yaw " +
-                              fmt("%.1f", g.transform.yaw_deg) + " deg",
+                              fmt("%.1f", g.transform.yaw_deg) + " deg" +
+                              (gi ? ", off by " + fmt("%.2f", g.offset_m) + " m" : ""),
                           groupColour(static_cast<int>(gi)), Mark::Dot});
     }
     groups.push_back({"matched, in no group", kNoGroupColour, Mark::Dot});

@@ -81,13 +81,14 @@ std::string QualityReport::fullReport() const
                       c.pairs, c.mean_error_m, c.score);
         s += line;
     }
-    s += "brokenness  group  vertices  squared error   yaw\n";
+    s += "brokenness  group  vertices  squared error   yaw          off by\n";
     for (std::size_t i = 0; i < brokenness.groups.size(); ++i)
     {
         const auto& g = brokenness.groups[i];
         char line[160];
-        std::snprintf(line, sizeof(line), "            %5zu  %8zu  %9.3f m^2  %6.1f deg\n", i,
-                      g.gt_vertices.size(), g.squared_error_m2, g.transform.yaw_deg);
+        std::snprintf(line, sizeof(line), "            %5zu  %8zu  %9.3f m^2  %6.1f deg  %s\n", i,
+                      g.gt_vertices.size(), g.squared_error_m2, g.transform.yaw_deg,
+                      i ? fmt("%6.2f m", g.offset_m).c_str() : "     -");
         s += line;
     }
     for (const auto& m : messages) s += "note        " + m + "\n";

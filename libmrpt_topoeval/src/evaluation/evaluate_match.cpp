@@ -676,6 +676,17 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
                      { return x.gt_vertices.size() > y.gt_vertices.size(); });
     b.degree = std::max(0, static_cast<int>(b.groups.size()) - 1);
     b.score = 1.0 / (1.0 + b.degree);
+    // Ours: how far each part is off, against the larger part that places its vertices
+    // nearest (a chain of breaks: each break's own size). Reported, not scored (doc/quality.md,
+    // "How far a part is off").
+    for (std::size_t i = 1; i < b.groups.size(); ++i)
+    {
+        auto& g = b.groups[i];
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t j = 0; j < i; ++j)
+            best = std::min(best, squaredGap(g.transform, b.groups[j].transform, g.gt_vertices));
+        g.offset_m = std::sqrt(best / double(g.gt_vertices.size()));
+    }
     return b;
 }
 }  // namespace

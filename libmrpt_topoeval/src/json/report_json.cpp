@@ -106,6 +106,7 @@ void writeBrokenness(JsonWriter& w, const Brokenness& b)
         w.key("yaw_deg").value(g.transform.yaw_deg, kDegreeDecimals);
         w.key("x").value(g.transform.x_m, kMetreDecimals);
         w.key("y").value(g.transform.y_m, kMetreDecimals);
+        w.key("offset_m").value(g.offset_m, kMetreDecimals);
         w.endObject();
     }
     w.endArray();

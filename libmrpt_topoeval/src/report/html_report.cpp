@@ -205,6 +205,7 @@ void writeReport(JsonWriter& w, const TopologyGraph& gt, const TopologyGraph& ma
     {
         w.beginObject(true);
         w.key("squared_error_m2").value(g.squared_error_m2, 5);
+        w.key("offset_m").value(g.offset_m, 3);
         w.key("transform");
         writeTransform(w, g.transform);
         w.key("vertices").beginArray(true);

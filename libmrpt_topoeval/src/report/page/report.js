@@ -119,13 +119,15 @@
     const groups = el('table', {id: 'groups-table'},
       el('tr', {}, el('th', {class: 'text', text: 'brokenness group'}),
          el('th', {text: 'vertices'}), el('th', {text: 'rotation [\u00b0]'}),
-         el('th', {text: 'shift x, y [m]'}), el('th', {text: 'mean sq. error [m\u00b2]'})));
+         el('th', {text: 'shift x, y [m]'}), el('th', {text: 'mean sq. error [m\u00b2]'}),
+         el('th', {text: 'off by [m]'})));
     b.groups.forEach((g, i) => groups.appendChild(el('tr', {},
       el('td', {class: 'text'}, el('span', {class: 'swatch', style: 'background:' +
                                             groupColour(i)}), 'group ' + i),
       el('td', {text: String(g.vertices.length)}), el('td', {text: num(g.transform.yaw_deg, 2)}),
       el('td', {text: num(g.transform.x, 2) + ', ' + num(g.transform.y, 2)}),
-      el('td', {text: num(g.squared_error_m2, 4)}))));
+      el('td', {text: num(g.squared_error_m2, 4)}),
+      el('td', {text: i ? num(g.offset_m, 2) : '\u2013'}))));
     return card(title || 'Summary',
       el('div', {class: 'row'},
          el('div', {}, el('div', {class: 'muted', text: 'quality'}),
@@ -330,7 +332,8 @@
       ...entry.brokenness.groups.map((g, i) => el('span', {},
         el('span', {class: 'swatch', style: 'background:' + groupColour(i)}),
         'group ' + i + ': ' + g.vertices.length + ' vertices, yaw ' +
-        num(g.transform.yaw_deg, 1) + '\u00b0')),
+        num(g.transform.yaw_deg, 1) + '\u00b0' +
+        (i ? ', off by ' + num(g.offset_m, 2) + ' m' : ''))),
       el('span', {}, el('span', {class: 'swatch', style: 'background:' + C.no_group}),
          'matched, in no group'),
       el('span', {}, el('span', {class: 'swatch', style: 'background:' + C.unmatched}),
