@@ -185,6 +185,7 @@ const char* const kTinyJsonHead = R"({
     ]
   },
   "quality": 0.6543,
+  "map_scale": 1,
   "messages": [
     "a \"quoted\" note"
   ],

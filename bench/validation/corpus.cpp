@@ -67,6 +67,8 @@ void addVariants(Corpus& corpus, std::size_t gi, std::size_t other, bool generat
                 2 * M_PI)));
     if (res < 0.099) add("resample", "_0.10", 0.10);
     if (generated) add("resample", "_x1.37", res * 1.37);
+    add("scaled", "_1.05", 1.05);
+    if (generated) add("scaled", "_0.97", 0.97);
     add("speckle", "", 0.15);
     if (generated) add("gaps", "", 0.5);
     add("ragged", "", 2.0);
@@ -231,6 +233,11 @@ Variant makeCaseMap(const Corpus& corpus, const CaseSpec& c)
         return makeRigid(grid, r.yaw_rad, r.t_m);
     }
     if (c.kind == "resample") return makeResampled(grid, c.param);
+    if (c.kind == "scaled")
+    {
+        const Rigid2D r = randomRigid(c.seed);
+        return makeScaled(grid, c.param, r.yaw_rad, r.t_m);
+    }
     if (c.kind == "speckle") return makeSpeckled(grid, c.param, 0.03, c.seed);
     if (c.kind == "gaps") return makeWallGaps(grid, c.param, c.seed);
     if (c.kind == "ragged") return makeRagged(grid, static_cast<int>(c.param), c.seed);

@@ -46,9 +46,9 @@ bool otherBuilding(const std::string& kind) { return kind == "different" || kind
 
 const std::vector<std::string>& kindOrder()
 {
-    static const std::vector<std::string> k = {"identical", "rigid",  "resample",  "speckle",
-                                               "gaps",      "ragged", "crop",      "broken",
-                                               "furniture", "slam",   "different", "twin"};
+    static const std::vector<std::string> k = {
+        "identical", "rigid",  "resample",  "scaled", "speckle",   "gaps", "ragged",
+        "crop",      "broken", "furniture", "slam",   "different", "twin"};
     return k;
 }
 

@@ -378,6 +378,43 @@ Variant makeResampled(const COccupancyGridMap2D& gt, double resolution_m)
     return v;
 }
 
+Variant makeScaled(const COccupancyGridMap2D& gt, double scale, double yaw_rad,
+                   const Eigen::Vector2d& shift_m)
+{
+    const Variant moved = makeRigid(gt, yaw_rad, shift_m);
+    const COccupancyGridMap2D& m = moved.map;
+    Variant v;
+    // The limits are multiples of the moved map's cell, so of the scaled cell too: setSize's
+    // snapping keeps them, and cell (x, y) lies at `scale` times its world point.
+    v.map.setSize(m.getXMin() * scale, m.getXMax() * scale, m.getYMin() * scale,
+                  m.getYMax() * scale, m.getResolution() * scale);
+    const unsigned sx = std::min(v.map.getSizeX(), m.getSizeX()),
+                   sy = std::min(v.map.getSizeY(), m.getSizeY());
+    for (unsigned y = 0; y < sy; ++y)
+        for (unsigned x = 0; x < sx; ++x) v.map.setCell(x, y, m.getCell(x, y));
+    v.truth = moved.truth;
+    const double inv = 1.0 / scale;
+    if (moved.truth.mapping)
+        v.truth.mapping = [f = moved.truth.mapping, inv](const Eigen::Vector2d& p)
+        { return f(p * inv); };
+    if (moved.truth.forward)
+        v.truth.forward = [f = moved.truth.forward, scale](const Eigen::Vector2d& p)
+        {
+            auto q = f(p);
+            if (q) *q *= scale;
+            return q;
+        };
+    if (moved.truth.vertex_places)
+        v.truth.vertex_places =
+            [f = moved.truth.vertex_places, inv](const Eigen::Vector2d& p, double clearance_m)
+        { return f(p * inv, clearance_m * inv); };
+    if (moved.truth.is_clutter)
+        v.truth.is_clutter = [f = moved.truth.is_clutter, inv](const Eigen::Vector2d& p)
+        { return f(p * inv); };
+    v.truth.source = moved.truth.source + ", scaled by " + fmt(scale, 3);
+    return v;
+}
+
 Variant makeSpeckled(const COccupancyGridMap2D& gt, double wall_fraction, double specks_per_m2,
                      std::uint32_t seed)
 {

@@ -46,6 +46,12 @@ Variant makeRigid(const mrpt::maps::COccupancyGridMap2D& gt, double yaw_rad,
 /** Resampled to `resolution_m` in place (same world frame). */
 Variant makeResampled(const mrpt::maps::COccupancyGridMap2D& gt, double resolution_m);
 
+/** A rigid move (`yaw_rad`, `shift_m`) of a map whose scale is off by `scale`: every world
+ * point of the moved map multiplied by it, as a floor plan drawn with a wrong resolution or a
+ * map whose odometry misjudged distances (the same cells, a cell `scale` times as wide). */
+Variant makeScaled(const mrpt::maps::COccupancyGridMap2D& gt, double scale, double yaw_rad,
+                   const Eigen::Vector2d& shift_m);
+
 /** Obstacle speckles: `wall_fraction` of the cells on wall borders flipped (as
  * tests/support's addSpeckleNoise), plus isolated obstacle specks of 1-2 cells in open free
  * space, `specks_per_m2` of free area (clutter, left out of the truth check). */

@@ -80,6 +80,7 @@ py::dict scoresOf(const QualityReport& r)
     d["consistency_score"] = r.consistencyScore();
     d["brokenness"] = matched ? py::cast(r.brokenness.degree) : py::none();
     d["brokenness_score"] = r.brokenness.score;
+    d["map_scale"] = r.map_scale;
     d["matched"] = matched;
     return d;
 }

@@ -67,6 +67,11 @@ struct QualityReport
     std::vector<ConsistencyClass> local_consistency;  //!< short, medium, long
     Brokenness brokenness;
     double quality = 0.0;  //!< Weighted combination of the scores [0, 1] (doc/quality.md).
+    /** The factor the map's distances were multiplied by to be matched, and its brokenness
+     * measured, at the ground truth's scale (the scale pass, [GraphMatcher] scale_min_error);
+     * 1 = as given. Accuracy and consistency measure the map as given, so a scale error costs
+     * there; the brokenness groups' transforms apply to the map's points times it [ratio]. */
+    double map_scale = 1.0;
     std::vector<std::string> messages;
     std::map<std::string, double> timing_ms;
 

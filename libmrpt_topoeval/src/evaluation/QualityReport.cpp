@@ -55,6 +55,9 @@ std::string QualityReport::briefReport() const
     const std::size_t ng = brokenness.groups.size();
     s += "brokenness  " + std::to_string(brokenness.degree) + " (" + std::to_string(ng) +
          (ng == 1 ? " group" : " groups") + ")\n";
+    if (map_scale != 1.0)
+        s += "scale       the map's distances x " + fmt("%.4f", map_scale) +
+             " are the ground truth's (matched and brokenness measured at that scale)\n";
     return s;
 }
 

@@ -18,6 +18,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "evaluation/evaluate_match_at.h"
 #include "evaluation/wall_places.h"
 #include "geometry/horn.h"
 #include "geometry/rigid_split.h"
@@ -694,7 +695,17 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
 QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGraph& map,
                             const GraphMatch& match, const QualityParameters& p, unsigned threads)
 {
+    return internal::evaluateMatchAt(ground_truth, map, map, match, p, threads);
+}
+
+QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const TopologyGraph& map,
+                                        const TopologyGraph& map_for_brokenness,
+                                        const GraphMatch& match, const QualityParameters& p,
+                                        unsigned threads)
+{
     p.validate();
+    if (map_for_brokenness.vertices.size() != map.vertices.size())
+        throw InputError("the map's graph for brokenness is not the map's graph at another scale");
     // Before anything indexes the graphs with the match's pairs.
     for (const auto& pr : match.pairs)
         if (pr.ground_truth < 0 || pr.ground_truth >= int(ground_truth.vertices.size()) ||
@@ -729,13 +740,13 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     {
         try
         {
-            broken_future =
-                std::async(std::launch::async,
-                           [&]
-                           {
-                               internal::Walls own(ground_truth, map);
-                               return brokenness(ground_truth, map, gt_view, match, p, own);
-                           });
+            broken_future = std::async(std::launch::async,
+                                       [&]
+                                       {
+                                           internal::Walls own(ground_truth, map_for_brokenness);
+                                           return brokenness(ground_truth, map_for_brokenness,
+                                                             gt_view, match, p, own);
+                                       });
         }
         catch (const std::system_error&)
         {
@@ -827,8 +838,15 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
     r.relative_accuracy.rmse_m = std::sqrt(sq / double(pg.size()));
     r.relative_accuracy.score = invScore(r.relative_accuracy.rmse_m, p.accuracy_scale_m);
 
-    r.brokenness = broken_future.valid() ? broken_future.get()
-                                         : brokenness(ground_truth, map, gt_view, match, p, walls);
+    if (broken_future.valid())
+        r.brokenness = broken_future.get();
+    else if (&map_for_brokenness == &map)
+        r.brokenness = brokenness(ground_truth, map, gt_view, match, p, walls);
+    else
+    {
+        internal::Walls own(ground_truth, map_for_brokenness);
+        r.brokenness = brokenness(ground_truth, map_for_brokenness, gt_view, match, p, own);
+    }
 
     // Quality: weighted mean of coverage, relative accuracy, the mean of the non-empty
     // consistency classes, and brokenness (doc/quality.md).

@@ -29,6 +29,8 @@ using internal::kDegreeDecimals;
 using internal::kMetreDecimals;
 constexpr int kSquareMetreDecimals = 6;
 constexpr int kScoreDecimals = internal::kSimilarityDecimals;
+// A map's scale: 1e-5, a tenth of a millimetre over 10 m.
+constexpr int kScaleDecimals = 5;
 
 std::uint64_t u64(std::size_t n) { return static_cast<std::uint64_t>(n); }
 
@@ -270,6 +272,7 @@ std::string reportToJson(const TopologyGraph& ground_truth, const TopologyGraph&
     w.key("brokenness");
     writeBrokenness(w, r.brokenness);
     w.key("quality").value(r.quality, kScoreDecimals);
+    w.key("map_scale").value(r.map_scale, kScaleDecimals);
     w.key("messages").beginArray();
     for (const std::string& m : r.messages) w.value(m);
     w.endArray();

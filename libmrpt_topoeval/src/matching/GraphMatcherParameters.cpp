@@ -202,6 +202,16 @@ TOPOEVAL_PARAMETER_TABLE(
          atLeast(0).atMost(1)),
     flag(TOPOEVAL_KEY(clutter_start_without_islands),
          "clutter pass: a map whose match pairs fewer than 3 vertices is judged by the match of "
-         "the map without all its islands"))
+         "the map without all its islands"),
+    real(TOPOEVAL_KEY(scale_min_error), "ratio",
+         "scale pass: the map read at the ground truth's scale when its match shows its distances "
+         "off by more than this (0: off)",
+         atLeast(0).atMost(0.5)),
+    real(TOPOEVAL_KEY(scale_min_sigmas), "1",
+         "scale pass: ... and by this many standard errors of the estimate", atLeast(0)),
+    real(TOPOEVAL_KEY(scale_min_pair_share), "ratio",
+         "scale pass: ... kept in fewer brokenness groups with this share of the pairs before "
+         "it",
+         atLeast(0).atMost(1)))
 
 }  // namespace mrpt_topoeval

@@ -9,6 +9,8 @@
 #include <mrpt_topoeval/pipeline/evaluate.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <exception>
 #include <future>
 #include <optional>
@@ -19,7 +21,9 @@
 
 #include "common/clock.h"
 #include "common/threads.h"
+#include "evaluation/evaluate_match_at.h"
 #include "pipeline/clutter.h"
+#include "pipeline/map_scale.h"
 
 namespace mrpt_topoeval
 {
@@ -65,11 +69,13 @@ Matched matchStep(const TopologyGraph& gt, const mrpt::maps::COccupancyGridMap2D
 // and matched again; kept, with its graph in `map`, when it pairs more vertices. A match that
 // grew reaches further islands: the pass repeats on the edited map. A match of fewer than 3
 // pairs gives nothing to judge by: the first round then judges by the match of the map with
-// all its islands freed (clutter_start_without_islands). Returns what it did, for the report's
-// messages (empty when it changed nothing).
+// all its islands freed (clutter_start_without_islands). The edited grid of the map kept is
+// left in `current` (the scale pass reads it). Returns what it did, for the report's messages
+// (empty when it changed nothing).
 std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyGridMap2D& gt_grid,
                           TopologyGraph& map, const mrpt::maps::COccupancyGridMap2D& map_grid,
-                          const Parameters& params, Matched& m)
+                          const Parameters& params, Matched& m,
+                          std::optional<mrpt::maps::COccupancyGridMap2D>& current)
 {
     const GraphMatcherParameters& p = params.matcher;
     if (p.method != MatchMethod::Consistent || p.clutter_passes <= 0) return {};
@@ -91,7 +97,6 @@ std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyG
                 start = Start{std::move(graph), std::move(bare_match.match)};
         }
     }
-    std::optional<mrpt::maps::COccupancyGridMap2D> current;  // the map as edited so far
     const std::size_t first_pairs = m.match.pairs.size();
     std::size_t removed_total = 0;
     int passes = 0;
@@ -130,8 +135,62 @@ std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyG
            " pairs; the map's graph reported is without them";
 }
 
-// Similarity, match (with the clutter pass, which may replace `map`'s graph) and evaluation of
-// two graphs built since `t0` (their time is "graphs").
+// The scale pass (GraphMatcherParameters::scale_min_error; doc/matching.md, "A map at another
+// scale"), its first half: when the match `m` shows the distances of `map` (the graph of
+// `map_grid`) off from the ground truth's by one clear factor, the graph read at the ground
+// truth's scale and its match (at most two rounds, each keeping scale_min_pair_share of the
+// pairs before it). None when the match shows no such factor.
+struct AtScale
+{
+    double scale = 1.0;
+    TopologyGraph graph;
+    GraphMatch match;
+    internal::MapScale first;  // the first round's estimate
+};
+std::optional<AtScale> readAtScale(const TopologyGraph& gt,
+                                   const mrpt::maps::COccupancyGridMap2D& gt_grid,
+                                   const TopologyGraph& map,
+                                   const mrpt::maps::COccupancyGridMap2D& map_grid,
+                                   const Parameters& params, const GraphMatch& m)
+{
+    const GraphMatcherParameters& p = params.matcher;
+    if (p.scale_min_error <= 0.0) return {};
+    std::optional<AtScale> out;
+    for (int round = 0; round < 2; ++round)
+    {
+        const internal::MapScale est =
+            internal::mapScaleOf(gt, out ? out->graph : map, out ? out->match : m);
+        const double off = std::abs(est.scale - 1.0);
+        if (est.groups == 0 || off <= p.scale_min_error ||
+            off <= p.scale_min_sigmas * est.std_error)
+            break;
+        // Read from the map's own graph and grid (only ICP similarity reads the grid).
+        const double scale = (out ? out->scale : 1.0) * est.scale;
+        TopologyGraph graph = internal::scaledGraph(map, scale);
+        Matched next = matchStep(gt, gt_grid, graph, internal::scaledGrid(map_grid, scale), params);
+        const std::size_t before = (out ? out->match : m).pairs.size();
+        if (double(next.match.pairs.size()) < p.scale_min_pair_share * double(before)) break;
+        const internal::MapScale first = out ? out->first : est;
+        out = AtScale{scale, std::move(graph), std::move(next.match), first};
+    }
+    return out;
+}
+
+// Its second half: the reading at the ground truth's scale is kept when it explains the map with
+// fewer parts: fewer brokenness groups, keeping scale_min_pair_share of the pairs. A map off by
+// one factor falls into more groups than it has parts, each only as wide as the pairwise
+// tolerance forgives; at its scale they join. A reading that joins none was not the map's
+// error: a bent SLAM map a few % shorter in one wing then showed a break more, and a broken
+// map's small groups near their cuts showed a factor of 1.03 +- 0.008 and a group 1 degree off
+// at it (doc/matching.md, "A map at another scale").
+bool keepAtScale(const QualityReport& as_given, const QualityReport& at_scale, double min_share)
+{
+    return at_scale.brokenness.groups.size() < as_given.brokenness.groups.size() &&
+           double(at_scale.match.pairs.size()) >= min_share * double(as_given.match.pairs.size());
+}
+
+// Similarity, match (with the clutter pass, which may replace `map`'s graph, and the scale
+// pass) and evaluation of two graphs built since `t0` (their time is "graphs").
 QualityReport scoreGraphs(const TopologyGraph& gt, const mrpt::maps::COccupancyGridMap2D& gt_grid,
                           TopologyGraph& map, const mrpt::maps::COccupancyGridMap2D& map_grid,
                           const Parameters& params, Clock::time_point t0)
@@ -139,18 +198,53 @@ QualityReport scoreGraphs(const TopologyGraph& gt, const mrpt::maps::COccupancyG
     const double t_graphs = msSince(t0);
     Matched m = matchStep(gt, gt_grid, map, map_grid, params);
     const auto tc = Clock::now();
-    const std::string clutter = clutterPasses(gt, gt_grid, map, map_grid, params, m);
+    std::optional<mrpt::maps::COccupancyGridMap2D> edited;  // by the clutter pass
+    const std::string clutter = clutterPasses(gt, gt_grid, map, map_grid, params, m, edited);
     const double t_clutter = msSince(tc);
+    const auto ts = Clock::now();
+    const std::optional<AtScale> scaled =
+        readAtScale(gt, gt_grid, map, edited ? *edited : map_grid, params, m.match);
+    const double t_scale = msSince(ts);
     const auto t3 = Clock::now();
-    QualityReport r = evaluateMatch(gt, map, m.match, params.quality,
-                                    internal::workerThreads(params.similarity.threads));
+    const unsigned threads = internal::workerThreads(params.similarity.threads);
+    QualityReport r = evaluateMatch(gt, map, m.match, params.quality, threads);
+    std::string scale_text;
+    if (scaled)
+    {
+        // Accuracy and consistency measure the map as given, brokenness where the factor is
+        // undone (the same graph, vertex for vertex).
+        QualityReport at = internal::evaluateMatchAt(gt, map, scaled->graph, scaled->match,
+                                                     params.quality, threads);
+        const internal::MapScale& f = scaled->first;
+        char text[500];
+        const bool kept = keepAtScale(r, at, params.matcher.scale_min_pair_share);
+        std::snprintf(text, sizeof text,
+                      "scale pass: the match showed the map's distances %s by %.1f %% (scale "
+                      "%.4f +- %.4f from %zu pairs in %zu groups); read at the ground truth's "
+                      "scale (x %.4f): %zu pairs in %zu brokenness groups against %zu in %zu; %s",
+                      f.scale > 1.0 ? "too short" : "too long",
+                      100.0 * std::abs(1.0 - 1.0 / f.scale), f.scale, f.std_error, f.pairs,
+                      f.groups, scaled->scale, at.match.pairs.size(), at.brokenness.groups.size(),
+                      r.match.pairs.size(), r.brokenness.groups.size(),
+                      kept ? "kept: brokenness is measured at that scale, accuracy and "
+                             "consistency on the map as given"
+                           : "not kept (it explains the map with no fewer parts)");
+        scale_text = text;
+        if (kept)
+        {
+            r = std::move(at);
+            r.map_scale = scaled->scale;
+        }
+    }
     r.timing_ms["graphs"] = t_graphs;
     r.timing_ms["similarity"] = m.similarity_ms;
     r.timing_ms["match"] = m.match_ms;
     if (params.matcher.clutter_passes > 0) r.timing_ms["clutter"] = t_clutter;
+    if (params.matcher.scale_min_error > 0.0) r.timing_ms["scale"] = t_scale;
     r.timing_ms["evaluation"] = msSince(t3);
     r.timing_ms["total"] = msSince(t0);
     if (!clutter.empty()) r.messages.push_back(clutter);
+    if (!scale_text.empty()) r.messages.push_back(scale_text);
     for (const auto& w : gt.warnings) r.messages.push_back("ground truth: " + w);
     for (const auto& w : map.warnings) r.messages.push_back("map: " + w);
     return r;

@@ -478,6 +478,27 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * never the one scored. Measured on the held-out warehouse style, seeds 1-10 (doc/matching.md
      * §2c) [bool]. */
     bool clutter_start_without_islands = true;
+    /** The scale pass (doc/matching.md, "A map at another scale"): a floor plan whose YAML
+     * gives a wrong resolution, or a map whose odometry misjudged distances, has every distance
+     * off by one factor; distance_tolerance_ratio forgives 3 % of it, and beyond that only
+     * groups a few metres wide stay consistent (a map 5 % too large fell into "broken" parts or
+     * matched nothing). When the first match's rigid groups show the map's distances off by more
+     * than this share of the ground truth's (and by scale_min_sigmas standard errors), the
+     * map's graph is read at the ground truth's scale and matched again, at most twice, its
+     * brokenness measured there (a map whose distances are all off by one factor is inaccurate,
+     * not broken: accuracy and consistency still measure it as given), and the report gives the
+     * factor (`map_scale`). 1 % is a third of the pairwise tolerance. 0 = off [ratio]. */
+    double scale_min_error = 0.01;
+    /** ... and by at least this many standard errors of the estimate (a small group's few
+     * vertices, sliding along the medial axis, give a loose factor) [1]. */
+    double scale_min_sigmas = 3.0;
+    /** ... and the reading at the ground truth's scale is kept when its pairs fall into fewer
+     * brokenness groups (a map off by one factor falls into more groups than it has parts; at
+     * its scale they join) and it keeps at least this share of the pairs of the reading before
+     * it: a pair at the edge of its tolerance may come or go with the factor (the Radish
+     * Freiburg 079 reference 5 % too large: 75 pairs in 3 groups, then 74 in one). A reading
+     * that joins no group was not the map's error (doc/matching.md) [ratio]. */
+    double scale_min_pair_share = 0.9;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
     void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
