@@ -14,6 +14,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "pipeline/map_scale.h"
+
 namespace mrpt_topoeval::validation
 {
 using mrpt::maps::COccupancyGridMap2D;
@@ -382,16 +384,9 @@ Variant makeScaled(const COccupancyGridMap2D& gt, double scale, double yaw_rad,
                    const Eigen::Vector2d& shift_m)
 {
     const Variant moved = makeRigid(gt, yaw_rad, shift_m);
-    const COccupancyGridMap2D& m = moved.map;
     Variant v;
-    // The limits are multiples of the moved map's cell, so of the scaled cell too: setSize's
-    // snapping keeps them, and cell (x, y) lies at `scale` times its world point.
-    v.map.setSize(m.getXMin() * scale, m.getXMax() * scale, m.getYMin() * scale,
-                  m.getYMax() * scale, m.getResolution() * scale);
-    const unsigned sx = std::min(v.map.getSizeX(), m.getSizeX()),
-                   sy = std::min(v.map.getSizeY(), m.getSizeY());
-    for (unsigned y = 0; y < sy; ++y)
-        for (unsigned x = 0; x < sx; ++x) v.map.setCell(x, y, m.getCell(x, y));
+    // The same cells, each `scale` times as wide (as the library's scale pass reads a map).
+    v.map = internal::scaledGrid(moved.map, scale);
     v.truth = moved.truth;
     const double inv = 1.0 / scale;
     if (moved.truth.mapping)
