@@ -139,11 +139,13 @@ mrpt::img::CImage drawQualityReport(const Grid& gt_grid, const TopologyGraph& gt
 
     // Legends: the attributes on one line, one entry per group, then the match and the graph.
     const int w = pic.canvas.cols;
-    const std::string summary = "quality " + fmt("%.3f", r.quality) + "    coverage " +
-                                fmt("%.3f", r.coverage) + "    brokenness " +
-                                std::to_string(r.brokenness.degree) + " (" +
-                                std::to_string(r.brokenness.groups.size()) +
-                                (r.brokenness.groups.size() == 1 ? " group)" : " groups)");
+    const std::string summary =
+        "quality " + fmt("%.3f", r.quality) + "    coverage " + fmt("%.3f", r.coverage) +
+        "    brokenness " + std::to_string(r.brokenness.degree) + " (" +
+        std::to_string(r.brokenness.groups.size()) +
+        (r.brokenness.groups.size() == 1 ? " group)" : " groups)") +
+        (r.map_scale != 1.0 ? "    map read at x " + fmt("%.4f", r.map_scale) + " (scale pass)"
+                            : std::string());
     using Mark = LegendEntry::Mark;
     std::vector<LegendEntry> groups;
     for (std::size_t gi = 0; gi < r.brokenness.groups.size(); ++gi)

@@ -167,6 +167,7 @@ void writeReport(JsonWriter& w, const TopologyGraph& gt, const TopologyGraph& ma
         }
 
     w.key("quality").value(r.quality, 4);
+    w.key("map_scale").value(r.map_scale, 5);
     w.key("coverage").value(r.coverage, 4);
     w.key("gt_vertices").value(static_cast<std::uint64_t>(r.gt_vertices));
     w.key("map_vertices").value(static_cast<std::uint64_t>(r.map_vertices));

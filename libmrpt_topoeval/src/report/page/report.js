@@ -132,7 +132,11 @@
       el('div', {class: 'row'},
          el('div', {}, el('div', {class: 'muted', text: 'quality'}),
             el('div', {class: 'big', id: 'quality', text: num(entry.quality, 3)}),
-            el('div', {class: 'muted', text: entry.map_vertices + ' matchable map vertices'})),
+            el('div', {class: 'muted', text: entry.map_vertices + ' matchable map vertices'}),
+            entry.map_scale && entry.map_scale !== 1 ?
+              el('div', {class: 'muted', id: 'map-scale',
+                         text: 'map read at x ' + num(entry.map_scale, 4) + ' (the scale pass)'}) :
+              null),
          el('div', {style: 'flex:1;min-width:300px'}, boxes)),
       el('div', {class: 'row', style: 'margin-top:10px'}, cons, groups));
   }
