@@ -347,29 +347,23 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             GroupScore g{group.transform.yaw_deg, {}, part};
             for (const auto& [k, n] : votes) g.vertices_per_part[k] = static_cast<std::size_t>(n);
             g.offset_m = group.offset_m;
+            const auto own = part_fit.find(part);
             if (!s.groups.empty())
             {
-                // As BrokennessGroup::offset_m, each part's true fit in place of the groups'.
-                g.true_offset_m = std::numeric_limits<double>::quiet_NaN();
-                const auto own = part_fit.find(part);
-                double nearest = std::numeric_limits<double>::infinity();
-                for (const GroupScore& larger : s.groups)
-                {
-                    const auto other = part_fit.find(larger.part);
-                    if (own == part_fit.end() || other == part_fit.end()) continue;
-                    double sum = 0.0;
-                    std::size_t n = 0;
-                    for (int v : group.gt_vertices)
-                        if (const int m = report.match.mapVertexOf(v); m >= 0)
-                        {
-                            const Eigen::Vector2d q =
-                                map.vertices[static_cast<std::size_t>(m)].position_m;
-                            sum += (own->second.apply(q) - other->second.apply(q)).squaredNorm();
-                            ++n;
-                        }
-                    if (n) nearest = std::min(nearest, sum / double(n));
-                }
-                if (std::isfinite(nearest)) g.true_offset_m = std::sqrt(nearest);
+                // BrokennessGroup::offset_m with each part's true fit in place of the groups'.
+                std::vector<Transform2D> larger;
+                for (const GroupScore& l : s.groups)
+                    if (const auto fit = part_fit.find(l.part); fit != part_fit.end())
+                        larger.push_back(fit->second);
+                std::vector<Eigen::Vector2d> points;
+                for (int v : group.gt_vertices)
+                    if (const int m = report.match.mapVertexOf(v); m >= 0)
+                        points.push_back(map.vertices[static_cast<std::size_t>(m)].position_m);
+                const double offset = own == part_fit.end()
+                                          ? std::numeric_limits<double>::infinity()
+                                          : internal::partOffset(own->second, larger, points);
+                g.true_offset_m =
+                    std::isfinite(offset) ? offset : std::numeric_limits<double>::quiet_NaN();
             }
             s.groups.push_back(std::move(g));
             if (part < 0) continue;

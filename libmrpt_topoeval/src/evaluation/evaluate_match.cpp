@@ -680,13 +680,12 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     // Ours: how far each part is off, against the larger part that places its vertices
     // nearest (a chain of breaks: each break's own size). Reported, not scored (doc/quality.md,
     // "How far a part is off").
-    for (std::size_t i = 1; i < b.groups.size(); ++i)
+    std::vector<Transform2D> larger;
+    for (auto& g : b.groups)
     {
-        auto& g = b.groups[i];
-        double best = std::numeric_limits<double>::infinity();
-        for (std::size_t j = 0; j < i; ++j)
-            best = std::min(best, squaredGap(g.transform, b.groups[j].transform, g.gt_vertices));
-        g.offset_m = std::sqrt(best / double(g.gt_vertices.size()));
+        if (!larger.empty())
+            g.offset_m = internal::partOffset(g.transform, larger, pointsOf(g.gt_vertices).second);
+        larger.push_back(g.transform);
     }
     return b;
 }

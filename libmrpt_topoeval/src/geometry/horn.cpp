@@ -2,9 +2,11 @@
 #include "geometry/horn.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace mrpt_topoeval
 {
@@ -116,5 +118,20 @@ std::optional<Eigen::Vector2d> agreementPoint(const Transform2D& a, const Transf
     const Eigen::Vector2d m((c * rhs.x() + s * rhs.y()) / det, (-s * rhs.x() + c * rhs.y()) / det);
     return a.apply(m);
 }
+double partOffset(const Transform2D& own, const std::vector<Transform2D>& others,
+                  const std::vector<Eigen::Vector2d>& points)
+{
+    double best = std::numeric_limits<double>::infinity();
+    if (points.empty()) return best;
+    for (const Transform2D& other : others)
+    {
+        double sum = 0.0;
+        for (const Eigen::Vector2d& q : points)
+            sum += (own.apply(q) - other.apply(q)).squaredNorm();
+        best = std::min(best, sum);
+    }
+    return std::sqrt(best / double(points.size()));
+}
+
 }  // namespace internal
 }  // namespace mrpt_topoeval

@@ -27,4 +27,11 @@ std::vector<double> leaveOneOutSquaredErrors(const std::vector<Eigen::Vector2d>&
  * equal (a shift has no such point). */
 std::optional<Eigen::Vector2d> agreementPoint(const Transform2D& a, const Transform2D& b);
 
+/** How far a part is off (BrokennessGroup::offset_m): the root mean square, over the part's map
+ * points `points`, of |own(q) - other(q)| for the transform of `others` that places them nearest
+ * to where `own` does (its neighbour part in a chain of breaks). Infinity when `others` or
+ * `points` is empty. */
+double partOffset(const Transform2D& own, const std::vector<Transform2D>& others,
+                  const std::vector<Eigen::Vector2d>& points);
+
 }  // namespace mrpt_topoeval::internal

@@ -164,10 +164,14 @@ std::optional<AtScale> readAtScale(const TopologyGraph& gt,
         if (est.groups == 0 || off <= p.scale_min_error ||
             off <= p.scale_min_sigmas * est.std_error)
             break;
-        // Read from the map's own graph and grid (only ICP similarity reads the grid).
+        // Read from the map's own graph. Only ICP similarity reads the grid: a copy of it at the
+        // scale is made for that mode alone (a map of 10^8 cells is 100 MB).
         const double scale = (out ? out->scale : 1.0) * est.scale;
         TopologyGraph graph = internal::scaledGraph(map, scale);
-        Matched next = matchStep(gt, gt_grid, graph, internal::scaledGrid(map_grid, scale), params);
+        std::optional<mrpt::maps::COccupancyGridMap2D> icp_grid;
+        if (params.similarity.mode == SimilarityMode::Icp)
+            icp_grid = internal::scaledGrid(map_grid, scale);
+        Matched next = matchStep(gt, gt_grid, graph, icp_grid ? *icp_grid : map_grid, params);
         const std::size_t before = (out ? out->match : m).pairs.size();
         if (double(next.match.pairs.size()) < p.scale_min_pair_share * double(before)) break;
         const internal::MapScale first = out ? out->first : est;
