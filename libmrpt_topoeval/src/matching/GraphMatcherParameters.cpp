@@ -212,6 +212,16 @@ TOPOEVAL_PARAMETER_TABLE(
     real(TOPOEVAL_KEY(scale_min_pair_share), "ratio",
          "scale pass: ... kept in fewer brokenness groups with this share of the pairs before "
          "it",
+         atLeast(0).atMost(1)),
+    real(TOPOEVAL_KEY(scale_search_step), "ratio",
+         "scale search: a map whose match pairs nothing is matched again read at the factors "
+         "(1 + this)^-k and ^k (0: off)",
+         atLeast(0).atMost(0.5)),
+    integer(TOPOEVAL_KEY(scale_search_steps), "count", "scale search: ... k = 1 .. this",
+            atLeast(0).atMost(10)),
+    real(TOPOEVAL_KEY(scale_search_min_group_share), "ratio",
+         "scale search: a reading counts when its biggest group holds this share of the smaller "
+         "graph's matchable vertices",
          atLeast(0).atMost(1)))
 
 }  // namespace mrpt_topoeval

@@ -8,6 +8,7 @@
 #include <mrpt_topoeval/matching/match_graphs.h>
 #include <mrpt_topoeval/pipeline/evaluate.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -135,27 +136,104 @@ std::string clutterPasses(const TopologyGraph& gt, const mrpt::maps::COccupancyG
            " pairs; the map's graph reported is without them";
 }
 
-// The scale pass (GraphMatcherParameters::scale_min_error; doc/matching.md, "A map at another
-// scale"), its first half: when the match `m` shows the distances of `map` (the graph of
-// `map_grid`) off from the ground truth's by one clear factor, the graph read at the ground
-// truth's scale and its match (at most two rounds, each keeping scale_min_pair_share of the
-// pairs before it). None when the match shows no such factor.
+// The map's graph read at a scale, and its match.
 struct AtScale
 {
     double scale = 1.0;
     TopologyGraph graph;
     GraphMatch match;
     internal::MapScale first;  // the first round's estimate
+    double searched = 0.0;     // the scale search's factor it started from; 0: none
 };
-std::optional<AtScale> readAtScale(const TopologyGraph& gt,
+
+// `map` read at `scale` (its grid too, for ICP similarity alone: a map of 10^8 cells is 100 MB)
+// and matched.
+AtScale matchAtScale(const TopologyGraph& gt, const mrpt::maps::COccupancyGridMap2D& gt_grid,
+                     const TopologyGraph& map, const mrpt::maps::COccupancyGridMap2D& map_grid,
+                     const Parameters& params, double scale)
+{
+    AtScale out;
+    out.scale = scale;
+    out.graph = internal::scaledGraph(map, scale);
+    std::optional<mrpt::maps::COccupancyGridMap2D> icp_grid;
+    if (params.similarity.mode == SimilarityMode::Icp)
+        icp_grid = internal::scaledGrid(map_grid, scale);
+    out.match = matchStep(gt, gt_grid, out.graph, icp_grid ? *icp_grid : map_grid, params).match;
+    return out;
+}
+
+// The scale search (GraphMatcherParameters::scale_search_step): when the match `m` pairs
+// nothing, `map` read at (1 + step)^-k and (1 + step)^k, k = 1, 2, ..., nearest first; the
+// reading with the most pairs (ties: the smaller factor) at the first k that pairs any. A map
+// off by more than the pairwise tolerance forgives shows no group to estimate its factor from.
+std::optional<AtScale> searchScale(const TopologyGraph& gt,
                                    const mrpt::maps::COccupancyGridMap2D& gt_grid,
                                    const TopologyGraph& map,
                                    const mrpt::maps::COccupancyGridMap2D& map_grid,
                                    const Parameters& params, const GraphMatch& m)
 {
     const GraphMatcherParameters& p = params.matcher;
+    if (!m.pairs.empty() || p.scale_min_error <= 0.0 || p.scale_search_step <= 0.0) return {};
+    // Each reading is one more chance for a chance group. So a reading's first group must be
+    // significant among all the readings tried (Bonferroni's count, as the a contrario test
+    // counts its tests: max_false_alarms shared by them), big enough to be trusted on that
+    // alone (first_group_wall_check_pairs: the walls that vouch for a smaller one are a test
+    // of their own, which the count does not cover; a chance group of 8 pairs between two
+    // multi-wing buildings, its walls agreeing, at one reading of four), and its biggest group
+    // must show the map as one part or a few big ones (scale_search_min_group_share: two
+    // campuses of one building code share their rooms, and a group of 11 of their 80 vertices
+    // was significant).
+    Parameters strict = params;
+    strict.matcher.max_false_alarms /= double(1 + 2 * p.scale_search_steps);
+    const auto matchable = [](const TopologyGraph& g)
+    {
+        return std::count_if(g.vertices.begin(), g.vertices.end(),
+                             [](const auto& v) { return !v.spurious; });
+    };
+    const double smaller = double(std::min(matchable(gt), matchable(map)));
+    const auto trusted = [&](const GraphMatch& match)
+    {
+        const std::size_t biggest =
+            match.isomorphism_sizes.empty()
+                ? 0
+                : *std::max_element(match.isomorphism_sizes.begin(), match.isomorphism_sizes.end());
+        return biggest >= std::size_t(std::max(p.first_group_wall_check_pairs, 1)) &&
+               double(biggest) >= p.scale_search_min_group_share * smaller;
+    };
+    for (int k = 1; k <= p.scale_search_steps; ++k)
+    {
+        std::optional<AtScale> best;
+        for (const int sign : {-1, 1})
+        {
+            const double scale = std::pow(1.0 + p.scale_search_step, sign * k);
+            AtScale next = matchAtScale(gt, gt_grid, map, map_grid, strict, scale);
+            if (trusted(next.match) &&
+                next.match.pairs.size() > (best ? best->match.pairs.size() : 0))
+            {
+                next.searched = scale;
+                best = std::move(next);
+            }
+        }
+        if (best) return best;
+    }
+    return {};
+}
+
+// The scale pass (GraphMatcherParameters::scale_min_error; doc/matching.md, "A map at another
+// scale"), its first half: when the match `m` shows the distances of `map` (the graph of
+// `map_grid`) off from the ground truth's by one clear factor, the graph read at the ground
+// truth's scale and its match (at most two rounds, each keeping scale_min_pair_share of the
+// pairs before it), from the scale search's reading `out` when it made one. None when neither
+// shows a factor.
+std::optional<AtScale> readAtScale(const TopologyGraph& gt,
+                                   const mrpt::maps::COccupancyGridMap2D& gt_grid,
+                                   const TopologyGraph& map,
+                                   const mrpt::maps::COccupancyGridMap2D& map_grid,
+                                   const Parameters& params, const GraphMatch& m,
+                                   std::optional<AtScale> out)
+{
+    const GraphMatcherParameters& p = params.matcher;
     if (p.scale_min_error <= 0.0) return {};
-    std::optional<AtScale> out;
     for (int round = 0; round < 2; ++round)
     {
         const internal::MapScale est =
@@ -164,18 +242,14 @@ std::optional<AtScale> readAtScale(const TopologyGraph& gt,
         if (est.groups == 0 || off <= p.scale_min_error ||
             off <= p.scale_min_sigmas * est.std_error)
             break;
-        // Read from the map's own graph. Only ICP similarity reads the grid: a copy of it at the
-        // scale is made for that mode alone (a map of 10^8 cells is 100 MB).
-        const double scale = (out ? out->scale : 1.0) * est.scale;
-        TopologyGraph graph = internal::scaledGraph(map, scale);
-        std::optional<mrpt::maps::COccupancyGridMap2D> icp_grid;
-        if (params.similarity.mode == SimilarityMode::Icp)
-            icp_grid = internal::scaledGrid(map_grid, scale);
-        Matched next = matchStep(gt, gt_grid, graph, icp_grid ? *icp_grid : map_grid, params);
+        // Read from the map's own graph.
+        AtScale next =
+            matchAtScale(gt, gt_grid, map, map_grid, params, (out ? out->scale : 1.0) * est.scale);
         const std::size_t before = (out ? out->match : m).pairs.size();
         if (double(next.match.pairs.size()) < p.scale_min_pair_share * double(before)) break;
-        const internal::MapScale first = out ? out->first : est;
-        out = AtScale{scale, std::move(graph), std::move(next.match), first};
+        next.first = out && out->first.groups > 0 ? out->first : est;
+        next.searched = out ? out->searched : 0.0;
+        out = std::move(next);
     }
     return out;
 }
@@ -206,8 +280,10 @@ QualityReport scoreGraphs(const TopologyGraph& gt, const mrpt::maps::COccupancyG
     const std::string clutter = clutterPasses(gt, gt_grid, map, map_grid, params, m, edited);
     const double t_clutter = msSince(tc);
     const auto ts = Clock::now();
+    const mrpt::maps::COccupancyGridMap2D& current = edited ? *edited : map_grid;
     const std::optional<AtScale> scaled =
-        readAtScale(gt, gt_grid, map, edited ? *edited : map_grid, params, m.match);
+        readAtScale(gt, gt_grid, map, current, params, m.match,
+                    searchScale(gt, gt_grid, map, current, params, m.match));
     const double t_scale = msSince(ts);
     const auto t3 = Clock::now();
     const unsigned threads = internal::workerThreads(params.similarity.threads);
@@ -221,19 +297,45 @@ QualityReport scoreGraphs(const TopologyGraph& gt, const mrpt::maps::COccupancyG
                                                      params.quality, threads);
         const internal::MapScale& f = scaled->first;
         char text[500];
-        const bool kept = keepAtScale(r, at, params.matcher.scale_min_pair_share);
-        std::snprintf(text, sizeof text,
-                      "scale pass: the match showed the map's distances %s by %.1f %% (scale "
-                      "%.4f +- %.4f from %zu pairs in %zu groups); read at the ground truth's "
-                      "scale (x %.4f): %zu pairs in %zu brokenness groups against %zu in %zu; %s",
-                      f.scale > 1.0 ? "too short" : "too long",
-                      100.0 * std::abs(1.0 - 1.0 / f.scale), f.scale, f.std_error, f.pairs,
-                      f.groups, scaled->scale, at.match.pairs.size(), at.brokenness.groups.size(),
-                      r.match.pairs.size(), r.brokenness.groups.size(),
-                      kept ? "kept: brokenness is measured at that scale, accuracy and "
-                             "consistency on the map as given"
-                           : "not kept (it explains the map with no fewer parts)");
-        scale_text = text;
+        // A reading the search found is kept: the map as given paired nothing.
+        const bool kept =
+            scaled->searched > 0.0 || keepAtScale(r, at, params.matcher.scale_min_pair_share);
+        if (scaled->searched > 0.0)
+        {
+            std::snprintf(text, sizeof text,
+                          "scale search: the map as given matched nothing; read at x %.4f it "
+                          "matched",
+                          scaled->searched);
+            scale_text = text;
+            if (f.groups > 0)
+            {
+                std::snprintf(text, sizeof text,
+                              ", and its groups' factor %.4f +- %.4f (%zu pairs in %zu groups) "
+                              "gave x %.4f",
+                              f.scale, f.std_error, f.pairs, f.groups, scaled->scale);
+                scale_text += text;
+            }
+            std::snprintf(text, sizeof text,
+                          ": %zu pairs in %zu brokenness group(s); brokenness is measured at that "
+                          "scale, accuracy and consistency on the map as given",
+                          at.match.pairs.size(), at.brokenness.groups.size());
+            scale_text += text;
+        }
+        else
+        {
+            std::snprintf(
+                text, sizeof text,
+                "scale pass: the match showed the map's distances %s by %.1f %% (scale "
+                "%.4f +- %.4f from %zu pairs in %zu groups); read at the ground truth's "
+                "scale (x %.4f): %zu pairs in %zu brokenness groups against %zu in %zu; %s",
+                f.scale > 1.0 ? "too short" : "too long", 100.0 * std::abs(1.0 - 1.0 / f.scale),
+                f.scale, f.std_error, f.pairs, f.groups, scaled->scale, at.match.pairs.size(),
+                at.brokenness.groups.size(), r.match.pairs.size(), r.brokenness.groups.size(),
+                kept ? "kept: brokenness is measured at that scale, accuracy and "
+                       "consistency on the map as given"
+                     : "not kept (it explains the map with no fewer parts)");
+            scale_text = text;
+        }
         if (kept)
         {
             r = std::move(at);

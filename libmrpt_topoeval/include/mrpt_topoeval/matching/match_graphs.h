@@ -499,6 +499,25 @@ struct GraphMatcherParameters : public mrpt::config::CLoadableOptions
      * Freiburg 079 reference 5 % too large: 75 pairs in 3 groups, then 74 in one). A reading
      * that joins no group was not the map's error (doc/matching.md) [ratio]. */
     double scale_min_pair_share = 0.9;
+    /** The scale search (doc/matching.md, "A map at another scale"): a map whose every distance
+     * is off by more than the pairwise tolerance forgives can match nothing at all, and then no
+     * group shows its factor (4 of the 31 standard maps read 5 % too large; a floor plan whose
+     * YAML gives a wrong resolution). When the match, after the clutter pass, pairs nothing, the
+     * map's graph is read at the factors (1 + this)^-k and (1 + this)^k, k = 1 ..
+     * scale_search_steps, nearest first; the reading with the most pairs at the first k that
+     * pairs any is kept, the scale pass refines its factor from its groups, and the report gives
+     * the factor (`map_scale`). 5 % is under twice distance_tolerance_ratio, so every factor
+     * between two steps is within one tolerance of either. 0 = off [ratio]. */
+    double scale_search_step = 0.05;
+    /** ... this many steps each way: 2 reaches factors 0.907-1.103 [count]. */
+    int scale_search_steps = 2;
+    /** ... and a reading counts only when its biggest group holds this share of the smaller
+     * graph's matchable vertices (and first_group_wall_check_pairs; its first group is also
+     * held to max_false_alarms shared by the readings). A reading stands for the whole map at
+     * another scale, which is one part or a few big ones there: the maps read 5 % too large
+     * matched 97-100 % of their vertices in one group, the chance groups the search found
+     * between near-twin buildings 11 of 80 [ratio]. */
+    double scale_search_min_group_share = 0.5;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
     void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
