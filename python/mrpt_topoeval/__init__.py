@@ -292,8 +292,10 @@ def compare(gt, map, config=None):
 RANK_CSV_COLUMNS = [
     "file", "rank", "quality", "coverage", "relative_accuracy_rmse_m", "relative_accuracy_score",
     "consistency_short", "consistency_medium", "consistency_long", "brokenness", "rank_coverage",
-    "rank_relative_accuracy", "rank_consistency", "rank_brokenness",
+    "rank_relative_accuracy", "rank_consistency", "rank_brokenness", "map_scale",
 ]
+# Its measured figures (numbers, written by format_number), the rest after "file" are ranks.
+_FIGURES = [c for c in RANK_CSV_COLUMNS[2:] if not c.startswith("rank")]
 _RANKED = [("rank", "quality"), ("rank_coverage", "coverage"),
            ("rank_relative_accuracy", "relative_accuracy_score"),
            ("rank_consistency", "consistency_score"), ("rank_brokenness", "brokenness_score")]
@@ -339,10 +341,10 @@ class Ranking(list):
         for r in self:
             f = [_csv_field(r["file"])]
             if r["error"] is None:
-                f += [r["rank"]] + [format_number(r[c]) for c in RANK_CSV_COLUMNS[2:10]]
-                f += [r[c] for c in RANK_CSV_COLUMNS[10:]]
+                f += [format_number(r[c]) if c in _FIGURES else r[c]
+                      for c in RANK_CSV_COLUMNS[1:]]
             else:
-                f += [""] * 13
+                f += [""] * (len(RANK_CSV_COLUMNS) - 1)
             lines.append(",".join(f))
         return "\n".join(lines) + "\n"
 
@@ -355,7 +357,7 @@ def _csv_field(s):
 
 def _score_row(file, scores):
     row = {"file": file, "error": None, "scores": scores}
-    for c in RANK_CSV_COLUMNS[2:10]:
+    for c in _FIGURES:
         row[c] = scores[c]
     return row
 

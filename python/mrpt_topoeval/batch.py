@@ -193,8 +193,8 @@ def _ranked_rows(rows):
         for c in te.RANK_CSV_COLUMNS[1:]:
             r.setdefault(c, None)
         if r["status"] == "ok":
-            for c in te.RANK_CSV_COLUMNS[2:10]:
-                r[c] = r["scores"][c]
+            for c in te._FIGURES:  # a row of an older run may lack a newer figure
+                r[c] = r["scores"].get(c)
         out.append(r)
     groups = {}
     for r in out:
@@ -216,9 +216,8 @@ def _csv_text(rows):
     for r in rows:
         ok = r["status"] == "ok"
         vals = [r["gt"], r["map"], r["config"], r["status"], r["error"]]
-        vals.append(r["rank"] if ok else "")
-        vals += [te.format_number(r[c]) if ok else "" for c in te.RANK_CSV_COLUMNS[2:10]]
-        vals += [r[c] if ok else "" for c in te.RANK_CSV_COLUMNS[10:]]
+        vals += [("" if not ok else te.format_number(r[c]) if c in te._FIGURES else r[c])
+                 for c in te.RANK_CSV_COLUMNS[1:]]
         w.writerow(vals)
     return buf.getvalue()
 
