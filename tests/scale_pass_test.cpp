@@ -35,6 +35,22 @@ GraphMatch selfMatch(const TopologyGraph& g)
     m.isomorphism_sizes = {m.pairs.size()};
     return m;
 }
+
+// The campus moved (turned 31 degrees and shifted) and read `factor` times too large.
+COccupancyGridMap2D campusMovedAndReadAt(double factor)
+{
+    return internal::scaledGrid(transformGrid(makeCampusMap(), 31 * kDeg, {4.0, -2.0}), factor);
+}
+
+// The map's graph given back by evaluate() is the map's own, not the one read at the ground
+// truth's scale.
+void expectTheMapsOwnGraph(const TopologyGraph& given, const COccupancyGridMap2D& map)
+{
+    const TopologyGraph own = buildTopologyGraph(map, Parameters{}.graph);
+    ASSERT_EQ(given.vertices.size(), own.vertices.size());
+    for (std::size_t i = 0; i < own.vertices.size(); ++i)
+        EXPECT_EQ(given.vertices[i].position_m, own.vertices[i].position_m);
+}
 }  // namespace
 
 // The factor from the match's groups: exact on a graph read at another scale, and the same
@@ -89,8 +105,7 @@ TEST(MapScale, IsTheFactorTheGroupsShow)
 TEST(ScalePass, AMapReadFivePercentTooLargeIsOnePartAtItsScale)
 {
     const COccupancyGridMap2D campus = makeCampusMap();
-    const COccupancyGridMap2D moved = transformGrid(campus, 31 * kDeg, {4.0, -2.0});
-    const COccupancyGridMap2D big = internal::scaledGrid(moved, 1.05);
+    const COccupancyGridMap2D big = campusMovedAndReadAt(1.05);
 
     Parameters off;
     off.matcher.scale_min_error = 0.0;
@@ -107,14 +122,10 @@ TEST(ScalePass, AMapReadFivePercentTooLargeIsOnePartAtItsScale)
     EXPECT_GT(with.quality, without.quality);
     // Accuracy measures the map as given: 5 % of a 60 m campus is metres off at its ends.
     EXPECT_GT(with.relative_accuracy.rmse_m, 0.3);
-    // The map's graph is given back as the map has it, not at the ground truth's scale.
-    const TopologyGraph own = buildTopologyGraph(big, Parameters{}.graph);
-    ASSERT_EQ(m.vertices.size(), own.vertices.size());
-    for (std::size_t i = 0; i < own.vertices.size(); ++i)
-        EXPECT_EQ(m.vertices[i].position_m, own.vertices[i].position_m);
+    expectTheMapsOwnGraph(m, big);
 
     // A map at the ground truth's scale is left as it is.
-    const QualityReport same = evaluate(campus, moved, Parameters{});
+    const QualityReport same = evaluate(campus, campusMovedAndReadAt(1.0), Parameters{});
     EXPECT_EQ(same.map_scale, 1.0);
     EXPECT_EQ(same.brokenness.degree, 0);
 }
@@ -126,8 +137,7 @@ TEST(ScalePass, AMapReadFivePercentTooLargeIsOnePartAtItsScale)
 TEST(ScaleSearch, AMapThatMatchesNothingAtItsOwnScaleIsFoundAtAnother)
 {
     const COccupancyGridMap2D campus = makeCampusMap();
-    const COccupancyGridMap2D moved = transformGrid(campus, 31 * kDeg, {4.0, -2.0});
-    const COccupancyGridMap2D big = internal::scaledGrid(moved, 1.12);
+    const COccupancyGridMap2D big = campusMovedAndReadAt(1.12);
 
     Parameters off;
     off.matcher.scale_search_step = 0.0;
@@ -142,10 +152,7 @@ TEST(ScaleSearch, AMapThatMatchesNothingAtItsOwnScaleIsFoundAtAnother)
     EXPECT_GE(with.coverage, 0.9);
     // Accuracy measures the map as given (12 % of 60 m), and the graph given back is the map's.
     EXPECT_GT(with.relative_accuracy.rmse_m, 0.6);
-    const TopologyGraph own = buildTopologyGraph(big, Parameters{}.graph);
-    ASSERT_EQ(m.vertices.size(), own.vertices.size());
-    for (std::size_t i = 0; i < own.vertices.size(); ++i)
-        EXPECT_EQ(m.vertices[i].position_m, own.vertices[i].position_m);
+    expectTheMapsOwnGraph(m, big);
     bool said = false;
     for (const auto& text : with.messages) said |= text.rfind("scale search:", 0) == 0;
     EXPECT_TRUE(said);

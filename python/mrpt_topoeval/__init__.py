@@ -296,9 +296,16 @@ RANK_CSV_COLUMNS = [
 ]
 # Its measured figures (numbers, written by format_number), the rest after "file" are ranks.
 _FIGURES = [c for c in RANK_CSV_COLUMNS[2:] if not c.startswith("rank")]
+
 _RANKED = [("rank", "quality"), ("rank_coverage", "coverage"),
            ("rank_relative_accuracy", "relative_accuracy_score"),
            ("rank_consistency", "consistency_score"), ("rank_brokenness", "brokenness_score")]
+
+
+def _rank_fields(row):
+    """The CSV texts of a scored row's columns after "file", as ``topoeval rank --csv``
+    writes them (also the batch's ``results.csv``)."""
+    return [format_number(row[c]) if c in _FIGURES else row[c] for c in RANK_CSV_COLUMNS[1:]]
 
 
 def rank_positions(values, valid, decimals=3):
@@ -341,8 +348,7 @@ class Ranking(list):
         for r in self:
             f = [_csv_field(r["file"])]
             if r["error"] is None:
-                f += [format_number(r[c]) if c in _FIGURES else r[c]
-                      for c in RANK_CSV_COLUMNS[1:]]
+                f += _rank_fields(r)
             else:
                 f += [""] * (len(RANK_CSV_COLUMNS) - 1)
             lines.append(",".join(f))

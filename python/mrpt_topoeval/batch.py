@@ -216,8 +216,7 @@ def _csv_text(rows):
     for r in rows:
         ok = r["status"] == "ok"
         vals = [r["gt"], r["map"], r["config"], r["status"], r["error"]]
-        vals += [("" if not ok else te.format_number(r[c]) if c in te._FIGURES else r[c])
-                 for c in te.RANK_CSV_COLUMNS[1:]]
+        vals += te._rank_fields(r) if ok else [""] * (len(te.RANK_CSV_COLUMNS) - 1)
         w.writerow(vals)
     return buf.getvalue()
 

@@ -23,6 +23,7 @@
 #include "common/clock.h"
 #include "common/threads.h"
 #include "evaluation/evaluate_match_at.h"
+#include "graph/MatchView.h"
 #include "pipeline/clutter.h"
 #include "pipeline/map_scale.h"
 
@@ -185,12 +186,8 @@ std::optional<AtScale> searchScale(const TopologyGraph& gt,
     // was significant).
     Parameters strict = params;
     strict.matcher.max_false_alarms /= double(1 + 2 * p.scale_search_steps);
-    const auto matchable = [](const TopologyGraph& g)
-    {
-        return std::count_if(g.vertices.begin(), g.vertices.end(),
-                             [](const auto& v) { return !v.spurious; });
-    };
-    const double smaller = double(std::min(matchable(gt), matchable(map)));
+    const double smaller = double(std::min(internal::makeMatchView(gt).numActive(),
+                                           internal::makeMatchView(map).numActive()));
     const auto trusted = [&](const GraphMatch& match)
     {
         const std::size_t biggest =
