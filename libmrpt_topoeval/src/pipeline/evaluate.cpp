@@ -188,13 +188,16 @@ std::optional<AtScale> searchScale(const TopologyGraph& gt,
     strict.matcher.max_false_alarms /= double(1 + 2 * p.scale_search_steps);
     const double smaller = double(std::min(internal::makeMatchView(gt).numActive(),
                                            internal::makeMatchView(map).numActive()));
+    const int min_pairs = std::max(p.first_group_wall_check_pairs, 1);
+    // No group of a smaller graph can count: its readings need not be matched.
+    if (smaller < double(min_pairs)) return {};
     const auto trusted = [&](const GraphMatch& match)
     {
         const std::size_t biggest =
             match.isomorphism_sizes.empty()
                 ? 0
                 : *std::max_element(match.isomorphism_sizes.begin(), match.isomorphism_sizes.end());
-        return biggest >= std::size_t(std::max(p.first_group_wall_check_pairs, 1)) &&
+        return biggest >= std::size_t(min_pairs) &&
                double(biggest) >= p.scale_search_min_group_share * smaller;
     };
     for (int k = 1; k <= p.scale_search_steps; ++k)
