@@ -943,6 +943,83 @@ TEST(QualityEvaluator, CroppedMapCoversPart)
     EXPECT_LE(r.coverage, 0.65);
 }
 
+// The map's side of coverage (doc/quality.md, "Explained walls"): each case's known answer
+// from the maps alone.
+TEST(QualityEvaluator, ExplainedWallsAreTheMapsSideOfCoverage)
+{
+    const COccupancyGridMap2D campus = makeCampusMap();
+    // The campus west of x = 31 m, the rest unknown (as if never explored).
+    auto westHalf = [](COccupancyGridMap2D g)
+    {
+        for (unsigned cy = 0; cy < g.getSizeY(); ++cy)
+            for (unsigned cx = 0; cx < g.getSizeX(); ++cx)
+                if (g.idx2x(cx) > 31.0) g.setCell(cx, cy, 0.5f);
+        return g;
+    };
+    const COccupancyGridMap2D half = westHalf(campus);
+    auto check = [](const QualityReport& r, const char* what)
+    {
+        EXPECT_TRUE(r.explained_walls.measured) << what;
+        EXPECT_EQ(r.explained_walls.unexplained_m.size(),
+                  r.explained_walls.wall_points - r.explained_walls.explained)
+            << what;
+        EXPECT_DOUBLE_EQ(r.explained_walls.share, double(r.explained_walls.explained) /
+                                                      double(r.explained_walls.wall_points))
+            << what;
+    };
+
+    // Identical, and moved: every wall explained.
+    const QualityReport same = compare(campus, campus, "explained_same");
+    check(same, "same");
+    EXPECT_DOUBLE_EQ(same.explained_walls.share, 1.0);
+    const QualityReport moved =
+        compare(campus, transformGrid(campus, 151.0 * kDeg, {5.0, -3.0}), "explained_moved");
+    check(moved, "moved");
+    EXPECT_GE(moved.explained_walls.share, 0.99);
+
+    // A crop: half the ground truth matched, but all of the map's walls are the ground truth's.
+    const QualityReport crop = compare(campus, half, "explained_crop");
+    check(crop, "crop");
+    EXPECT_LE(crop.coverage, 0.65);
+    EXPECT_GE(crop.explained_walls.share, 0.99);
+
+    // The reverse: the whole campus against its west half. Every ground-truth vertex is
+    // matched, but the map's walls east of the cut (beyond the tolerance) have no ground-truth
+    // wall: the share is that of the map's wall points west of it.
+    TopologyGraph gt_graph, map_graph;
+    const QualityReport more = evaluate(half, campus, Parameters{}, &gt_graph, &map_graph);
+    check(more, "more");
+    EXPECT_GE(more.coverage, 0.9);
+    const double tolerance = more.explained_walls.tolerance_m;
+    EXPECT_DOUBLE_EQ(tolerance, QualityParameters{}.explained_wall_tolerance_m);
+    std::size_t west = 0;
+    for (const auto& q : map_graph.wall_points_m) west += q.x() <= 31.0 + tolerance;
+    const double expected = double(west) / double(map_graph.wall_points_m.size());
+    EXPECT_NEAR(more.explained_walls.share, expected, 0.02);
+    for (const auto& q : more.explained_walls.unexplained_m) EXPECT_GT(q.x(), 31.0) << q.y();
+
+    // Broken once: each part's walls are explained by its own group.
+    const QualityReport broken = compare(campus, brokenCampus(1), "explained_broken");
+    check(broken, "broken");
+    ASSERT_EQ(broken.brokenness.degree, 1);
+    EXPECT_GE(broken.explained_walls.share, 0.97);
+
+    // Graphs without wall points (made in code): not measured, and quality as without it.
+    TopologyGraph bare = buildTopologyGraph(campus);
+    bare.wall_points_m.clear();
+    GraphMatch match;
+    for (const auto& v : bare.vertices)
+        if (!v.spurious) match.pairs.push_back({v.id, v.id, MatchStage::Isomorphism, 1.0, 0});
+    match.isomorphism = match.pairs.size();
+    match.isomorphism_sizes = {match.pairs.size()};
+    QualityParameters off;
+    off.explained_wall_tolerance_m = 0.0;
+    const QualityReport unmeasured = evaluateMatch(bare, bare, match);
+    EXPECT_FALSE(unmeasured.explained_walls.measured);
+    EXPECT_EQ(unmeasured.explained_walls.share, 0.0);
+    EXPECT_DOUBLE_EQ(unmeasured.quality, evaluateMatch(bare, bare, match, off).quality);
+}
+
 TEST(QualityEvaluator, DifferentBuildingHasLowCoverage)
 {
     // Different floor plans. (Two floors of one corridor-grid architecture with different rooms,

@@ -78,6 +78,12 @@ QualityReport tinyReport()
     r.brokenness.score = 0.5;
     r.brokenness.groups = {{{2, 0, 1}, 0.0123456789, {0.1, -0.2, -69.5}},
                            {{3}, 0.2, {0.0, 0.0, 21.8}, 1.23456789}};
+    r.explained_walls.measured = true;
+    r.explained_walls.wall_points = 3;
+    r.explained_walls.explained = 2;
+    r.explained_walls.share = 2.0 / 3.0;
+    r.explained_walls.tolerance_m = 0.3;
+    r.explained_walls.unexplained_m = {{1.0f, 2.0f}};  // not written: the picture draws them
     r.quality = 0.6543219;
     r.messages = {"a \"quoted\" note"};
     r.timing_ms = {{"similarity", 0.5}, {"total", 1.25}};
@@ -183,6 +189,13 @@ const char* const kTinyJsonHead = R"({
         "offset_m": 1.2346
       }
     ]
+  },
+  "explained_walls": {
+    "measured": true,
+    "share": 0.6667,
+    "wall_points": 3,
+    "explained": 2,
+    "tolerance_m": 0.3
   },
   "quality": 0.6543,
   "map_scale": 1,

@@ -309,6 +309,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
     s.coverage = report.coverage;
     s.quality = report.quality;
     s.relative_rmse_m = report.relative_accuracy.rmse_m;
+    s.explained_walls = report.explained_walls.measured ? report.explained_walls.share : nan;
     s.brokenness_found = report.brokenness.degree;
     for (std::size_t i = 1; i < report.brokenness.groups.size(); ++i)
         s.break_offsets_m.push_back(report.brokenness.groups[i].offset_m);

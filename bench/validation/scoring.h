@@ -154,6 +154,8 @@ struct CaseScore
     std::vector<PartScore> parts;
     std::vector<GroupScore> groups;
     double coverage = 0.0, quality = 0.0, relative_rmse_m = 0.0;
+    /** QualityReport::explained_walls.share; NaN when not measured (nothing matched). */
+    double explained_walls = 0.0;
     /** Pairs whose map vertex is more than this from its partner count as false [m]:
      * max(0.5 m, half the larger clearance of the two vertices), since a dead end or a room's
      * vertex sits on a medial axis that slides by a fraction of its clearance. */

@@ -188,7 +188,7 @@ std::string casesCsv(const std::vector<CaseResult>& results)
          "brokenness_injected,brokenness_found,parts_with_3_pairs,parts_with_5_pairs,"
          "parts_with_5_counterparts,parts_with_3_counterparts,parts_with_3_kept,false_core,"
          "false_grown,"
-         "max_group_rotation_error_deg,error,time_ms\n";
+         "max_group_rotation_error_deg,error,time_ms,explained_walls\n";
     for (const auto& r : results)
     {
         const auto& s = r.score;
@@ -206,7 +206,7 @@ std::string casesCsv(const std::vector<CaseResult>& results)
           << s.parts_with_5_counterparts << ',' << s.parts_with_3_counterparts << ','
           << s.parts_with_3_kept << ',' << s.false_core << ',' << s.false_grown << ','
           << numText(s.max_group_rotation_error_deg, 2) << ',' << csvField(r.error) << ','
-          << numText(r.time_ms, 1) << '\n';
+          << numText(r.time_ms, 1) << ',' << numText(s.explained_walls) << '\n';
     }
     return o.str();
 }
@@ -353,6 +353,7 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("coverage").value(s.coverage, 4);
         j.key("quality").value(s.quality, 4);
         j.key("relative_rmse_m").value(s.relative_rmse_m, 4);
+        j.key("explained_walls").value(s.explained_walls, 4);
         j.key("brokenness_injected").value(s.brokenness_injected);
         j.key("brokenness_found").value(s.brokenness_found);
         j.key("break_offsets_m").beginArray(true);

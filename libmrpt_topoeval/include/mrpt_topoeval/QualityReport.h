@@ -55,6 +55,27 @@ struct Brokenness
     double score = 0.0;                   //!< 1 / (1 + degree); 0 when nothing matched.
 };
 
+/** Ours (issue 11): the map's side of coverage. Coverage counts the ground truth's vertices
+ * that the match found; this counts the map's walls that it explains: the map's wall points
+ * (occupied cells bordering free or unknown space) that some brokenness group's transform, or
+ * the relative alignment when there is no group, puts within `tolerance_m` of a ground-truth
+ * wall point. What it leaves: a part matched nowhere (broken beyond recognition, another
+ * building), clutter the ground truth lacks, walls drawn farther off than the tolerance
+ * (doc/quality.md, "Explained walls"). */
+struct ExplainedWalls
+{
+    /** False when it could not be measured: nothing matched, or a graph without wall points
+     * (a graph made in code). Then `share` is 0 and `quality` does not use it. */
+    bool measured = false;
+    std::size_t wall_points = 0;  //!< The map's wall points.
+    std::size_t explained = 0;    //!< Of them, those within tolerance_m of a ground-truth wall.
+    double share = 0.0;           //!< explained / wall_points [0, 1].
+    double tolerance_m = 0.0;     //!< The tolerance used (at least 1.5 cells) [m].
+    /** The map's wall points not explained, in the map's frame as given [m]: where the map
+     * disagrees with the ground truth, drawn by drawQualityReport(). */
+    std::vector<Eigen::Vector2f> unexplained_m;
+};
+
 /** Everything `compare` reports. Plain data; text and JSON in QualityReport.cpp / report_json. */
 struct QualityReport
 {
@@ -66,6 +87,7 @@ struct QualityReport
     Accuracy relative_accuracy;
     std::vector<ConsistencyClass> local_consistency;  //!< short, medium, long
     Brokenness brokenness;
+    ExplainedWalls explained_walls;
     double quality = 0.0;  //!< Weighted combination of the scores [0, 1] (doc/quality.md).
     /** The factor the map's distances were multiplied by to be matched, and its brokenness
      * measured, at the ground truth's scale (the scale pass, [GraphMatcher] scale_min_error);

@@ -15,6 +15,7 @@
 #include <tuple>
 #include <vector>
 
+#include "common/format.h"
 #include "drawing/graph_drawing.h"
 
 namespace mrpt_topoeval
@@ -35,12 +36,7 @@ const cv::Scalar& groupColour(int group)
                      : kGroupColours[static_cast<std::size_t>(group) % kGroupColours.size()];
 }
 
-std::string fmt(const char* format, double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), format, v);
-    return buf;
-}
+using internal::fmt;
 
 /** A white strip with one line of text, like a legend row without a mark. */
 cv::Mat textStrip(int width, const std::string& text)
@@ -109,6 +105,13 @@ mrpt::img::CImage drawQualityReport(const Grid& gt_grid, const TopologyGraph& gt
     internal::MatchPicture pic =
         internal::drawMatchPicture(gt_grid, gt, map_grid, map, r.match, opts, "drawQualityReport");
 
+    // The map's walls that no matched part explains (doc/quality.md, "Explained walls"): where
+    // the map disagrees with the ground truth. Under the vertices, which stay readable.
+    const int wall_radius = std::max(1, pic.map.style.edge_thickness_px);
+    for (const Eigen::Vector2f& q : r.explained_walls.unexplained_m)
+        cv::circle(pic.canvas, pic.map.point(q.cast<double>()), wall_radius,
+                   internal::kUnexplainedWallColour, cv::FILLED);
+
     // Unmatched non-spurious vertices first (white), then the matched ones; spurious vertices
     // keep their graph colour, as their edges do.
     std::vector<bool> gt_matched(gt.vertices.size(), false),
@@ -144,6 +147,8 @@ mrpt::img::CImage drawQualityReport(const Grid& gt_grid, const TopologyGraph& gt
         "    brokenness " + std::to_string(r.brokenness.degree) + " (" +
         std::to_string(r.brokenness.groups.size()) +
         (r.brokenness.groups.size() == 1 ? " group)" : " groups)") +
+        (r.explained_walls.measured ? "    explained walls " + fmt("%.3f", r.explained_walls.share)
+                                    : std::string()) +
         (r.map_scale != 1.0 ? "    map read at x " + fmt("%.4f", r.map_scale) + " (scale pass)"
                             : std::string());
     using Mark = LegendEntry::Mark;
@@ -159,6 +164,11 @@ mrpt::img::CImage drawQualityReport(const Grid& gt_grid, const TopologyGraph& gt
     }
     groups.push_back({"matched, in no group", kNoGroupColour, Mark::Dot});
     groups.push_back({"not matched", kUnmatchedColour, Mark::Dot});
+    if (r.explained_walls.measured)
+        groups.push_back(
+            {"map walls no part explains (" +
+                 std::to_string(r.explained_walls.wall_points - r.explained_walls.explained) + ")",
+             internal::kUnexplainedWallColour, Mark::Dot});
     // Vertex fills mean groups here, not degrees: only the graph's edge entries stay.
     std::vector<LegendEntry> graph_entries;
     for (const LegendEntry& e : internal::graphLegendEntries(opts.draw_boundary))

@@ -127,6 +127,9 @@ inline const std::array<cv::Scalar, 10> kGroupColours = {
     cv::Scalar(0, 128, 128),    // olive
 };
 inline const cv::Scalar kNoGroupColour(160, 160, 160);
+// The map's walls that no matched part explains (drawQualityReport()): bright red dots on the
+// walls, apart from the thin red lines of neighbour growing.
+inline const cv::Scalar kUnexplainedWallColour(0, 0, 255);
 inline const cv::Scalar kUnmatchedColour(255, 255, 255);
 
 /** One of the two maps of a match picture: where it sits and how to find its vertices. */

@@ -81,9 +81,16 @@ TOPOEVAL_PARAMETER_TABLE(
          "weight of the mean local consistency score in quality", atLeast(0)),
     real(TOPOEVAL_KEY(weight_brokenness), "1", "weight of the brokenness score in quality",
          atLeast(0)),
+    real(TOPOEVAL_KEY(weight_explained_walls), "1",
+         "weight of the explained walls' share in quality", atLeast(0)),
+    real(TOPOEVAL_KEY(explained_wall_tolerance_m), "m",
+         "a map wall point is explained this near a ground-truth wall under a part's fit (0 = off)",
+         atLeast(0)),
     real(TOPOEVAL_KEY(min_trusted_coverage), "ratio",
-         "below this coverage quality x sqrt(coverage / this) (0 = paper)", atLeast(0).atMost(1)),
-    // All weights 0 would leave the weighted mean undefined.
+         "below this coverage or explained walls' share quality x sqrt(that / this) (0 = paper)",
+         atLeast(0).atMost(1)),
+    // All weights 0 would leave the weighted mean undefined (the explained walls' weight does
+    // not count: they are not measured on every pair of graphs).
     relation(&P::weight_coverage, "at least one weight > 0",
              [](const P& p)
              {

@@ -5,16 +5,13 @@
 #include <cstdio>
 #include <string>
 
+#include "common/format.h"
+
 namespace mrpt_topoeval
 {
 namespace
 {
-std::string fmt(const char* f, double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), f, v);
-    return buf;
-}
+using internal::fmt;
 
 std::string consistencyLine(const QualityReport& r)
 {
@@ -55,6 +52,12 @@ std::string QualityReport::briefReport() const
     const std::size_t ng = brokenness.groups.size();
     s += "brokenness  " + std::to_string(brokenness.degree) + " (" + std::to_string(ng) +
          (ng == 1 ? " group" : " groups") + ")\n";
+    if (explained_walls.measured)
+        s += "walls       " + fmt("%.3f", explained_walls.share) +
+             " of the map's wall points explained (" + std::to_string(explained_walls.explained) +
+             " of " + std::to_string(explained_walls.wall_points) + " within " +
+             fmt("%.2f", explained_walls.tolerance_m) +
+             " m of a ground-truth wall under a part's fit)\n";
     if (map_scale != 1.0)
         s += "scale       the map's distances x " + fmt("%.4f", map_scale) +
              " are the ground truth's (matched and brokenness measured at that scale)\n";

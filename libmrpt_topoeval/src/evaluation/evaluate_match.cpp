@@ -19,6 +19,7 @@
 #include <system_error>
 
 #include "evaluation/evaluate_match_at.h"
+#include "evaluation/explained_walls.h"
 #include "evaluation/wall_places.h"
 #include "geometry/horn.h"
 #include "geometry/rigid_split.h"
@@ -847,22 +848,45 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
         r.brokenness = brokenness(ground_truth, map_for_brokenness, gt_view, match, p, own);
     }
 
+    // The map's walls that the match explains: each placed by the part whose transform puts it
+    // on a ground-truth wall, brokenness's groups on the map at the scale they were fitted at,
+    // else the relative alignment on the map as given (doc/quality.md, "Explained walls").
+    if (p.explained_wall_tolerance_m > 0.0)
+    {
+        std::vector<Transform2D> fits;
+        for (const BrokennessGroup& g : r.brokenness.groups) fits.push_back(g.transform);
+        const bool by_groups = !fits.empty();
+        if (!by_groups) fits.push_back(r.relative_accuracy.transform);
+        const TopologyGraph& placed = by_groups ? map_for_brokenness : map;
+        const double tolerance =
+            std::max(p.explained_wall_tolerance_m,
+                     1.5 * std::max(ground_truth.map.resolution_m, placed.map.resolution_m));
+        if (walls.ok())
+            r.explained_walls = internal::explainedWalls(map, placed, fits, walls.gt(), tolerance);
+    }
+
     // Quality: weighted mean of coverage, relative accuracy, the mean of the non-empty
-    // consistency classes, and brokenness (doc/quality.md).
+    // consistency classes, brokenness and, when measured, the explained walls (doc/quality.md).
     const double consistency = r.consistencyScore();
-    const double wsum =
-        p.weight_coverage + p.weight_relative_accuracy + p.weight_consistency + p.weight_brokenness;
+    const double w_explained = r.explained_walls.measured ? p.weight_explained_walls : 0.0;
+    const double wsum = p.weight_coverage + p.weight_relative_accuracy + p.weight_consistency +
+                        p.weight_brokenness + w_explained;
     r.quality =
         (p.weight_coverage * r.coverage + p.weight_relative_accuracy * r.relative_accuracy.score +
-         p.weight_consistency * consistency + p.weight_brokenness * r.brokenness.score) /
+         p.weight_consistency * consistency + p.weight_brokenness * r.brokenness.score +
+         w_explained * r.explained_walls.share) /
         wsum;
     // Accuracy, consistency and brokenness are measured on the matched part only; when that is
     // a small share of the ground truth they say little about the whole map (one part of a map
-    // broken three times, a chance match with another building). Below min_trusted_coverage the
-    // quality shrinks with the square root of the share matched, as the confidence in an
-    // estimate from a sample does with the sample's size (ours; doc/quality.md).
-    if (p.min_trusted_coverage > 0.0 && r.coverage < p.min_trusted_coverage)
-        r.quality *= std::sqrt(r.coverage / p.min_trusted_coverage);
+    // broken three times, a chance match with another building), and when it explains a small
+    // share of the map's walls, little about the rest of the map (parts broken beyond
+    // recognition). Below min_trusted_coverage the quality shrinks with the square root of the
+    // smaller share, as the confidence in an estimate from a sample does with the sample's size
+    // (ours; doc/quality.md).
+    const double trusted =
+        r.explained_walls.measured ? std::min(r.coverage, r.explained_walls.share) : r.coverage;
+    if (p.min_trusted_coverage > 0.0 && trusted < p.min_trusted_coverage)
+        r.quality *= std::sqrt(trusted / p.min_trusted_coverage);
     return r;
 }
 

@@ -115,6 +115,17 @@ void writeBrokenness(JsonWriter& w, const Brokenness& b)
     w.endObject();
 }
 
+void writeExplainedWalls(JsonWriter& w, const ExplainedWalls& e)
+{
+    w.beginObject();
+    w.key("measured").value(e.measured);
+    w.key("share").value(e.share, kScoreDecimals);
+    w.key("wall_points").value(u64(e.wall_points));
+    w.key("explained").value(u64(e.explained));
+    w.key("tolerance_m").value(e.tolerance_m, kMetreDecimals);
+    w.endObject();
+}
+
 // ---------------------------------------------------------------- effective parameters
 
 /** One section of the configuration: its keys and their values as the INI text has them. */
@@ -271,6 +282,8 @@ std::string reportToJson(const TopologyGraph& ground_truth, const TopologyGraph&
     writeConsistency(w, r.local_consistency);
     w.key("brokenness");
     writeBrokenness(w, r.brokenness);
+    w.key("explained_walls");
+    writeExplainedWalls(w, r.explained_walls);
     w.key("quality").value(r.quality, kScoreDecimals);
     w.key("map_scale").value(r.map_scale, kScaleDecimals);
     w.key("messages").beginArray();

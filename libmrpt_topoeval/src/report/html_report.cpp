@@ -169,6 +169,13 @@ void writeReport(JsonWriter& w, const TopologyGraph& gt, const TopologyGraph& ma
     w.key("quality").value(r.quality, 4);
     w.key("map_scale").value(r.map_scale, 5);
     w.key("coverage").value(r.coverage, 4);
+    w.key("explained_walls").beginObject(true);
+    w.key("measured").value(r.explained_walls.measured);
+    w.key("share").value(r.explained_walls.share, 4);
+    w.key("wall_points").value(static_cast<std::uint64_t>(r.explained_walls.wall_points));
+    w.key("explained").value(static_cast<std::uint64_t>(r.explained_walls.explained));
+    w.key("tolerance_m").value(r.explained_walls.tolerance_m, 3);
+    w.endObject();
     w.key("gt_vertices").value(static_cast<std::uint64_t>(r.gt_vertices));
     w.key("map_vertices").value(static_cast<std::uint64_t>(r.map_vertices));
     for (const auto& [name, acc] : {std::make_pair("global_accuracy", &r.global_accuracy),

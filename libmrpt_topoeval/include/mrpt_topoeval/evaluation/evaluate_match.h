@@ -143,9 +143,17 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     double weight_relative_accuracy = 1.0;
     double weight_consistency = 1.0;
     double weight_brokenness = 1.0;
+    /** Weight of the explained walls' share in `quality` (explained_wall_tolerance_m) [1]. */
+    double weight_explained_walls = 0.0;
+    /** The map's side of coverage: a map wall point is explained when some brokenness group's
+     * transform (the relative alignment when there is none) puts it this near a ground-truth
+     * wall point (at least 1.5 cells). Larger than the walls' error of a map the match
+     * places right, so what is left is the map's content that no matched part accounts for
+     * (doc/quality.md, "Explained walls"). 0 = not measured (the paper) [m]. */
+    double explained_wall_tolerance_m = 0.3;
     /** Accuracy, consistency and brokenness describe the matched part only: below this
-     * coverage the quality is multiplied by sqrt(coverage / this). 0 = the paper's plain
-     * weighted mean [ratio]. */
+     * coverage, or share of the map's walls explained, the quality is multiplied by
+     * sqrt(the smaller / this). 0 = the paper's plain weighted mean [ratio]. */
     double min_trusted_coverage = 0.5;
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;

@@ -91,10 +91,16 @@
     const m = entry.match;
     const matched = m.pairs.length;
     const rel = entry.relative_accuracy, glob = entry.global_accuracy, b = entry.brokenness;
+    const ew = entry.explained_walls;
     const boxes = el('div', {class: 'scores'},
       scoreBox('coverage', num(entry.coverage, 3),
                matched + ' of ' + entry.gt_vertices + ' ground-truth vertices matched (' +
                m.isomorphism + ' isomorphism, ' + m.neighbour_growing + ' neighbour growing)'),
+      ew && ew.measured ?
+        scoreBox('explained walls', num(ew.share, 3),
+                 ew.explained + ' of ' + ew.wall_points + ' map wall points within ' +
+                 num(ew.tolerance_m, 2) + ' m of a ground-truth wall under a part\u2019s fit') :
+        null,
       scoreBox('relative accuracy', num(rel.score, 3),
                num(rel.rmse_m, 3) + ' m rmse after alignment (yaw ' +
                num(entry.transform.yaw_deg, 1) + '\u00b0)'),
