@@ -859,8 +859,7 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
         if (!by_groups) fits.push_back(r.relative_accuracy.transform);
         const TopologyGraph& placed = by_groups ? map_for_brokenness : map;
         const double tolerance =
-            std::max(p.explained_wall_tolerance_m,
-                     1.5 * std::max(ground_truth.map.resolution_m, placed.map.resolution_m));
+            internal::wallTolerance(p.explained_wall_tolerance_m, ground_truth, placed);
         if (walls.ok())
             r.explained_walls = internal::explainedWalls(map, placed, fits, walls.gt(), tolerance);
     }

@@ -21,8 +21,7 @@ std::optional<Transform2D> alignWalls(const TopologyGraph& gt, const TopologyGra
 double pairWallTolerance(const TopologyGraph& gt, const TopologyGraph& map,
                          const QualityParameters& p)
 {
-    return std::max(p.pair_wall_tolerance_m,
-                    1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
+    return wallTolerance(p.pair_wall_tolerance_m, gt, map);
 }
 
 void placeByWalls(const TopologyGraph& gt, const TopologyGraph& map, const GraphMatch& m,

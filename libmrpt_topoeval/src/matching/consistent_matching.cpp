@@ -348,8 +348,7 @@ ConsistentMatch findGroups(const TopologyGraph& gt, const TopologyGraph& map, Ma
         if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
         if (!map_walls) map_walls.emplace(map.wall_points_m);
     };
-    const double wall_tolerance =
-        std::max(p.wall_tolerance_m, 1.5 * std::max(gt.map.resolution_m, map.map.resolution_m));
+    const double wall_tolerance = wallTolerance(p.wall_tolerance_m, gt, map);
     // Walls that agree on at least `min_share` of their length and pin the fit
     // (max_wall_pinning). A share is 0 where either map has no walls.
     auto agreeOnAndPin = [&](const WallAgreement& w, double min_share)

@@ -10,6 +10,7 @@
 #include <mrpt_topoeval/TopologyGraph.h>
 #include <mrpt_topoeval/geometry/Transform2D.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -120,6 +121,13 @@ struct WallAgreement
         return share >= min_share && pinning <= max_pinning;
     }
 };
+
+/** A wall tolerance of at least 1.5 cells of the coarser of the two maps: a wall point's place
+ * is only known to its cell. */
+inline double wallTolerance(double tolerance_m, const TopologyGraph& a, const TopologyGraph& b)
+{
+    return std::max(tolerance_m, 1.5 * std::max(a.map.resolution_m, b.map.resolution_m));
+}
 
 /** The agreement of the walls around `pairs` (ground-truth vertex, map vertex) under
  * `gt_T_map` (map to ground truth). The pinning is measured only when the share is at least
