@@ -997,6 +997,26 @@ TEST(QualityEvaluator, ExplainedWallsAreTheMapsSideOfCoverage)
     const double expected = double(west) / double(map_graph.wall_points_m.size());
     EXPECT_NEAR(more.explained_walls.share, expected, 0.02);
     for (const auto& q : more.explained_walls.unexplained_m) EXPECT_GT(q.x(), 31.0) << q.y();
+    // The picture draws them as pure red dots, and the legend's swatch of them: no other mark
+    // of it is pure red.
+    auto redPixels = [](const mrpt::img::CImage& img)
+    {
+        std::size_t n = 0;  // channels in OpenCV's order: blue, green, red
+        for (unsigned y = 0; y < img.getHeight(); ++y)
+            for (unsigned x = 0; x < img.getWidth(); ++x)
+                n += img.at<std::uint8_t>(x, y, 0) == 0 && img.at<std::uint8_t>(x, y, 1) == 0 &&
+                     img.at<std::uint8_t>(x, y, 2) == 255;
+        return n;
+    };
+    TopologyGraph same_g, same_m;
+    QualityReport all_explained = evaluate(campus, campus, Parameters{}, &same_g, &same_m);
+    const std::size_t swatch =
+        redPixels(drawQualityReport(campus, same_g, campus, same_m, all_explained));
+    EXPECT_GT(swatch, 0u);
+    all_explained.explained_walls.measured = false;  // no legend entry either
+    EXPECT_EQ(redPixels(drawQualityReport(campus, same_g, campus, same_m, all_explained)), 0u);
+    EXPECT_GE(redPixels(drawQualityReport(half, gt_graph, campus, map_graph, more)),
+              swatch + more.explained_walls.unexplained_m.size() / 4);
 
     // Broken once: each part's walls are explained by its own group.
     const QualityReport broken = compare(campus, brokenCampus(1), "explained_broken");
