@@ -599,7 +599,7 @@ bool isRankingWithTies(const std::vector<std::string>& ranks)
 const char* const kRankCsvHeader =
     "file,rank,quality,coverage,relative_accuracy_rmse_m,relative_accuracy_score,"
     "consistency_short,consistency_medium,consistency_long,brokenness,rank_coverage,"
-    "rank_relative_accuracy,rank_consistency,rank_brokenness,map_scale";
+    "rank_relative_accuracy,rank_consistency,rank_brokenness,map_scale,explained_walls";
 }  // namespace
 
 TEST_F(Cli, CompareAndRankHelpAndUsageErrors)
@@ -828,9 +828,12 @@ TEST_F(Cli, RankWritesCsvWithRanksIndependentOfThreads)
     for (std::size_t i = 1; i < lines.size(); ++i)
     {
         std::vector<std::string> f = splitOn(lines[i] + ",", ',');
-        f.resize(15);
+        f.resize(16);
         EXPECT_EQ(f[0], scored[i - 1]) << "rows in the order given";
         EXPECT_EQ(f[14], "1") << "every map read at its own scale:\n" << csv;
+        EXPECT_EQ(f[15].empty(), f[9].empty())
+            << "explained walls, empty exactly when nothing matched:\n"
+            << csv;
         rows.push_back(f);
     }
     // Each rank column (overall, coverage, relative accuracy, consistency, brokenness) ranks
@@ -884,7 +887,7 @@ TEST_F(Cli, RankListsAMapThatFailsAndRanksTheOthers)
 
     const std::vector<std::string> lines = splitOn(readText(csv), '\n');
     ASSERT_EQ(lines.size(), 4u);
-    EXPECT_EQ(lines[2], none + ",,,,,,,,,,,,,,");
+    EXPECT_EQ(lines[2], none + ",,,,,,,,,,,,,,,");
     std::vector<std::string> ranks;
     for (const std::size_t i : {1u, 3u}) ranks.push_back(splitOn(lines[i], ',').at(1));
     EXPECT_TRUE(isRankingWithTies(ranks)) << readText(csv);

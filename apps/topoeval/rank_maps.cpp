@@ -136,7 +136,7 @@ std::string rankCsv(const std::vector<MapResult>& results, const Ranking& rk)
     std::string out =
         "file,rank,quality,coverage,relative_accuracy_rmse_m,relative_accuracy_score,"
         "consistency_short,consistency_medium,consistency_long,brokenness,rank_coverage,"
-        "rank_relative_accuracy,rank_consistency,rank_brokenness,map_scale\n";
+        "rank_relative_accuracy,rank_consistency,rank_brokenness,map_scale,explained_walls\n";
     for (std::size_t i = 0; i < results.size(); ++i)
     {
         const MapResult& m = results[i];
@@ -152,10 +152,11 @@ std::string rankCsv(const std::vector<MapResult>& results, const Ranking& rk)
                                consistencyScore(m, 1, true), consistencyScore(m, 2, true),
                                matched ? std::to_string(r.brokenness.degree) : "", rk.coverage[i],
                                rk.relative_accuracy[i], rk.consistency[i], rk.brokenness[i],
-                               num(r.map_scale, 4)});
+                               num(r.map_scale, 4),
+                               r.explained_walls.measured ? num(r.explained_walls.share, 4) : ""});
         }
         else
-            f.resize(15);  // a map that could not be evaluated: its file, nothing else
+            f.resize(16);  // a map that could not be evaluated: its file, nothing else
         for (std::size_t k = 0; k < f.size(); ++k) out += (k ? "," : "") + f[k];
         out += "\n";
     }

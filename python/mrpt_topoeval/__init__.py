@@ -293,6 +293,7 @@ RANK_CSV_COLUMNS = [
     "file", "rank", "quality", "coverage", "relative_accuracy_rmse_m", "relative_accuracy_score",
     "consistency_short", "consistency_medium", "consistency_long", "brokenness", "rank_coverage",
     "rank_relative_accuracy", "rank_consistency", "rank_brokenness", "map_scale",
+    "explained_walls",
 ]
 # Its measured figures (numbers, written by format_number), the rest after "file" are ranks.
 _FIGURES = [c for c in RANK_CSV_COLUMNS[2:] if not c.startswith("rank")]

@@ -81,6 +81,8 @@ py::dict scoresOf(const QualityReport& r)
     d["brokenness"] = matched ? py::cast(r.brokenness.degree) : py::none();
     d["brokenness_score"] = r.brokenness.score;
     d["map_scale"] = r.map_scale;
+    d["explained_walls"] =
+        r.explained_walls.measured ? py::cast(r.explained_walls.share) : py::none();
     d["matched"] = matched;
     return d;
 }
