@@ -263,9 +263,9 @@ void writeReport(JsonWriter& w, const TopologyGraph& gt, const TopologyGraph& ma
 }
 
 /** The thumbnail of a rank entry: both maps side by side at a common height, a line per
- * matched pair (green isomorphism, red neighbour growing) and each matched vertex in its
- * brokenness group's colour, as in drawQualityReport(), without the graphs: at thumbnail
- * size they would hide the maps. */
+ * matched pair (green isomorphism, red neighbour growing), each matched vertex in its
+ * brokenness group's colour and the map's walls that no matched part explains in bright red,
+ * as in drawQualityReport(), without the graphs: at thumbnail size they would hide the maps. */
 std::string thumbnail(const Grid& gt_grid, const TopologyGraph& gt, const Grid& grid,
                       const TopologyGraph& map, const QualityReport& r, int max_px)
 {
@@ -306,6 +306,10 @@ std::string thumbnail(const Grid& gt_grid, const TopologyGraph& gt, const Grid& 
         return cv::Point(static_cast<int>(std::lround((q.x + (side ? x_map : 0)) * 16)),
                          static_cast<int>(std::lround(q.y * 16)));
     };
+    // The map's walls that no matched part explains, as in the report's picture.
+    for (const Eigen::Vector2f& q : r.explained_walls.unexplained_m)
+        cv::circle(canvas, at(1, q.cast<double>()), 16, internal::kUnexplainedWallColour,
+                   cv::FILLED, cv::LINE_8, 4);
     for (const VertexPair& p : r.match.pairs)
         cv::line(canvas, at(0, gt.vertices[static_cast<std::size_t>(p.ground_truth)].position_m),
                  at(1, map.vertices[static_cast<std::size_t>(p.map)].position_m),
