@@ -912,7 +912,7 @@ struct RawlogSample
 
 const char* const kScoresHeader =
     "step,entry,time_s,scans,vertices,coverage,relative_accuracy,consistency_short,"
-    "consistency_medium,consistency_long,brokenness,quality,scoring_ms";
+    "consistency_medium,consistency_long,brokenness,quality,scoring_ms,explained_walls";
 }  // namespace
 
 TEST_F(Cli, RawlogHelpAndUsageErrors)
@@ -970,7 +970,7 @@ TEST_F(Cli, RawlogEndToEndWritesEveryOutputAndNeverOverwrites)
     EXPECT_EQ(lines[0], kScoresHeader);
     // 349 scans, every 100: snapshots at 100, 200, 300 and the end.
     EXPECT_EQ(lines.size(), 5u) << readText(out + "/scores.csv");
-    EXPECT_EQ(splitOn(lines.back(), ',').size(), 13u);
+    EXPECT_EQ(splitOn(lines.back(), ',').size(), 14u);
     const std::string json = readText(out + "/report.json");
     EXPECT_TRUE(contains(json, "\"stop\": \"end_of_file\"")) << json;
     EXPECT_TRUE(contains(json, "\"final_scores\": {")) << json;

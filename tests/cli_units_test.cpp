@@ -34,6 +34,7 @@ ScoreRow sampleRow()
     r.brokenness = 1;
     r.quality = 0.9149639396;
     r.scoring_ms = 26.5;
+    r.explained_walls = 0.96123456789;
     return r;
 }
 }  // namespace
@@ -46,7 +47,8 @@ TEST(ScoreRows, JsonHasTheCsvColumnsWithTenSignificantDigits)
               "{\"step\": 3, \"entry\": 697, \"time_s\": 34.8, \"scans\": 349, \"vertices\": 24, "
               "\"coverage\": 0.875, \"relative_accuracy\": 0.834769777, \"consistency_short\": "
               "1, \"consistency_medium\": 0, \"consistency_long\": 0, \"brokenness\": 1, "
-              "\"quality\": 0.9149639396, \"scoring_ms\": 26.5}\n");
+              "\"quality\": 0.9149639396, \"scoring_ms\": 26.5, \"explained_walls\": "
+              "0.9612345679}\n");
     ScoreRow no_time = sampleRow();
     no_time.time_s = std::numeric_limits<double>::quiet_NaN();
     EXPECT_EQ(scoreCsvLine(no_time).substr(0, 8), "3,697,,3");

@@ -65,10 +65,10 @@ TEST(RawlogScorer, CsvHeaderIsTheDocumentedOne)
 {
     EXPECT_EQ(scoreCsvHeader(),
               "step,entry,time_s,scans,vertices,coverage,relative_accuracy,consistency_short,"
-              "consistency_medium,consistency_long,brokenness,quality,scoring_ms");
+              "consistency_medium,consistency_long,brokenness,quality,scoring_ms,explained_walls");
     ScoreRow r;
     r.time_s = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_EQ(scoreCsvLine(r), "0,0,,0,0,0.0000,0.0000,0.0000,0.0000,0.0000,0,0.0000,0.0");
+    EXPECT_EQ(scoreCsvLine(r), "0,0,,0,0,0.0000,0.0000,0.0000,0.0000,0.0000,0,0.0000,0.0,0.0000");
 }
 
 TEST(RawlogScorer, PerfectOdometryCoverageRisesAndEndsUnbroken)

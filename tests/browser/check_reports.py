@@ -218,7 +218,7 @@ def check_series(driver, path, name, shots):
     open_page(driver, path)
     plot = driver.find_element(By.ID, "score-plot")
     paths = driver.find_elements(By.CSS_SELECTOR, "#score-plot path.series")
-    check(len(paths) == 6, name + ": six score curves")
+    check(len(paths) == 7, name + ": seven score curves")
     slider = driver.find_element(By.ID, "snapshot-slider")
     n = int(slider.get_attribute("max")) + 1
     check(n >= 2, name + ": %d snapshots" % n)

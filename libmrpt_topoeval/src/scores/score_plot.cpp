@@ -121,6 +121,7 @@ mrpt::img::CImage drawScorePlot(const std::vector<ScoreRow>& rows, const std::st
         {"consistency short", cv::Scalar(40, 160, 40), &ScoreRow::consistency_short, 1},
         {"consistency medium", cv::Scalar(0, 140, 230), &ScoreRow::consistency_medium, 1},
         {"consistency long", cv::Scalar(170, 40, 170), &ScoreRow::consistency_long, 1},
+        {"explained walls", cv::Scalar(0, 0, 255), &ScoreRow::explained_walls, 1},
     };
     for (const auto& s : kSeries)
     {

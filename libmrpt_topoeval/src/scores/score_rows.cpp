@@ -27,13 +27,14 @@ ScoreRow scoreRowFromReport(const QualityReport& report)
     }
     row.brokenness = report.brokenness.degree;
     row.quality = report.quality;
+    row.explained_walls = report.explained_walls.measured ? report.explained_walls.share : 0.0;
     return row;
 }
 
 std::string scoreCsvHeader()
 {
     return "step,entry,time_s,scans,vertices,coverage,relative_accuracy,consistency_short,"
-           "consistency_medium,consistency_long,brokenness,quality,scoring_ms";
+           "consistency_medium,consistency_long,brokenness,quality,scoring_ms,explained_walls";
 }
 
 std::string scoreCsvLine(const ScoreRow& r)
@@ -41,10 +42,10 @@ std::string scoreCsvLine(const ScoreRow& r)
     char time_buf[32] = "";
     if (std::isfinite(r.time_s)) std::snprintf(time_buf, sizeof(time_buf), "%.3f", r.time_s);
     char buf[320];
-    std::snprintf(buf, sizeof(buf), "%d,%zu,%s,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%.4f,%.1f",
+    std::snprintf(buf, sizeof(buf), "%d,%zu,%s,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%.4f,%.1f,%.4f",
                   r.step, r.entry, time_buf, r.scans, r.vertices, r.coverage, r.relative_accuracy,
                   r.consistency_short, r.consistency_medium, r.consistency_long, r.brokenness,
-                  r.quality, r.scoring_ms);
+                  r.quality, r.scoring_ms, r.explained_walls);
     return buf;
 }
 
@@ -64,6 +65,7 @@ void writeScoreRow(JsonWriter& w, const ScoreRow& r)
     w.key("brokenness").value(r.brokenness);
     w.key("quality").valueSignificant(r.quality, kDigits);
     w.key("scoring_ms").valueSignificant(r.scoring_ms, kDigits);
+    w.key("explained_walls").valueSignificant(r.explained_walls, kDigits);
     w.endObject();
 }
 

@@ -33,6 +33,9 @@ struct ScoreRow
     int brokenness = 0;       //!< Brokenness degree (0 = not broken).
     double quality = 0.0;     //!< The combined quality score [0, 1].
     double scoring_ms = 0.0;  //!< Wall time of the copy and evaluate() [ms].
+    /** Share of the map's wall points that the match explains [0, 1]; 0 when not measured
+     * (nothing matched): QualityReport::explained_walls. */
+    double explained_walls = 0.0;
 };
 
 /** A row from a quality report; `step`, `entry`, `time_s`, `scans`, `scoring_ms` are the
@@ -41,7 +44,8 @@ ScoreRow scoreRowFromReport(const QualityReport& report);
 
 /** The CSV header line (no newline):
  * `step,entry,time_s,scans,vertices,coverage,relative_accuracy,consistency_short,`
- * `consistency_medium,consistency_long,brokenness,quality,scoring_ms`. */
+ * `consistency_medium,consistency_long,brokenness,quality,scoring_ms,explained_walls` (the last
+ * added in session 42, after the columns a reader may know by position). */
 std::string scoreCsvHeader();
 /** One CSV line (no newline); a NaN time is an empty field. */
 std::string scoreCsvLine(const ScoreRow& row);

@@ -397,6 +397,7 @@
     {key: 'name', label: 'map', text: true, get: e => e.name},
     {key: 'quality', label: 'quality', get: e => e.quality, d: 3},
     {key: 'coverage', label: 'coverage', get: e => e.coverage, d: 3},
+    {key: 'walls', label: 'explained walls', get: e => explained(e), d: 3},
     {key: 'rel', label: 'rel. accuracy', get: e => e.relative_accuracy.score, d: 3},
     {key: 'rmse', label: 'rel. rmse [m]', get: e => e.relative_accuracy.rmse_m, d: 3, asc: true},
     {key: 'short', label: 'short', get: e => cls(e, 0), d: 2},
@@ -409,6 +410,10 @@
   function cls(e, i) {
     const c = e.consistency[i];
     return c && c.pairs ? c.score : null;
+  }
+  function explained(e) {
+    const w = e.explained_walls;
+    return w && w.measured ? w.share : null;
   }
   function rankValue(i) {
     const r = data.ranks[i];
@@ -510,7 +515,8 @@
      get: e => e.relative_accuracy.score},
     {key: 'short', label: 'consistency short', colour: '#ff7f0e', get: e => cls(e, 0)},
     {key: 'medium', label: 'consistency medium', colour: '#9467bd', get: e => cls(e, 1)},
-    {key: 'long', label: 'consistency long', colour: '#8c564b', get: e => cls(e, 2)}];
+    {key: 'long', label: 'consistency long', colour: '#8c564b', get: e => cls(e, 2)},
+    {key: 'walls', label: 'explained walls', colour: '#ff0000', get: e => explained(e)}];
 
   function seriesPage() {
     const entries = data.entries;
