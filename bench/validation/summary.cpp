@@ -193,6 +193,11 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
         a.mean_coverage += s.coverage;
         a.max_coverage = std::max(a.max_coverage, s.coverage);
         a.mean_quality += s.quality;
+        if (std::isfinite(s.explained_walls))
+        {
+            a.mean_explained_walls += s.explained_walls;
+            ++a.explained_measured;
+        }
         a.mean_time_ms += r->time_ms;
         if (r->spec.kind == "crop" && s.gt_vertices)
         {
@@ -208,6 +213,8 @@ Aggregate aggregate(const std::string& name, const std::vector<const CaseResult*
         a.mean_quality /= ok;
         a.mean_time_ms /= ok;
     }
+    a.mean_explained_walls =
+        a.explained_measured ? a.mean_explained_walls / double(a.explained_measured) : kNaN;
     for (CropErrors* c : {&a.crop_kept, &a.crop_counterparts})
         if (c->crops == 0) c->mean = kNaN;
     return a;
@@ -342,24 +349,24 @@ std::string formatSummary(const Summary& s, const std::vector<CaseResult>& resul
     {
         char buf[400];
         std::snprintf(
-            buf, sizeof buf, "%-18s %5zu %4zu %7s %6zu %6zu %6s %6s %7s %6s %6s %6s %6s %8s\n",
+            buf, sizeof buf, "%-18s %5zu %4zu %7s %6zu %6zu %6s %6s %7s %6s %6s %6s %6s %6s %8s\n",
             a.name.c_str(), a.cases, a.errors, num(a.truth_min).c_str(), a.matched, a.true_pairs,
             num(a.precision()).c_str(), num(a.recall()).c_str(),
             a.broken ? (std::to_string(a.broken_exact) + "/" + std::to_string(a.broken)).c_str()
                      : "-",
             a.broken ? num(a.max_rotation_error_deg, 1).c_str() : "-", num(a.mean_coverage).c_str(),
             num(a.max_coverage).c_str(), num(a.mean_quality).c_str(),
-            num(a.mean_time_ms, 0).c_str());
+            num(a.mean_explained_walls).c_str(), num(a.mean_time_ms, 0).c_str());
         o << buf;
     };
     o << "kind               cases  err truth_min matched   true  prec recall broken rot_err"
-         "  cov  covmax quality  time_ms\n";
+         "  cov  covmax quality  walls  time_ms\n";
     for (const auto& a : s.kinds) row(a);
     row(s.pooled_generated);
     row(s.pooled);
     // The pooled rows again, per building family (every kind but other buildings).
     o << "\nfamily             cases  err truth_min matched   true  prec recall broken rot_err"
-         "  cov  covmax quality  time_ms\n";
+         "  cov  covmax quality  walls  time_ms\n";
     for (const auto& a : s.families) row(a);
     o << "broken, by the truth alone, per family:";
     for (const auto& a : s.families)
@@ -541,6 +548,8 @@ std::vector<std::string> checkFloors(const Summary& s, const std::string& text,
             v = static_cast<double>(a->clean) / static_cast<double>(a->cases);
         else if (metric == "truth_min")
             v = a->truth_min;
+        else if (metric == "explained_walls")
+            v = a->mean_explained_walls;
         else if (metric == "crop_within")
             v = a->crop_kept.observable ? static_cast<double>(a->crop_kept.observable_within) /
                                               static_cast<double>(a->crop_kept.observable)

@@ -78,6 +78,9 @@ struct Aggregate
     /** Broken cases not exactly right, by brokenCause(). */
     std::map<std::string, std::size_t> broken_causes;
     double mean_coverage = 0.0, max_coverage = 0.0, mean_quality = 0.0;
+    /** Mean of CaseScore::explained_walls over the cases where it was measured (NaN: none). */
+    double mean_explained_walls = 0.0;
+    std::size_t explained_measured = 0;
     /** Crops: |coverage - share of ground-truth vertices kept|, the share counted two ways:
      * `crop_kept` by the crop's rectangle (CaseScore::gt_kept, the truth; since session 29) and
      * `crop_counterparts` by the vertices with a counterpart in the map's graph (before). */
@@ -154,7 +157,8 @@ Summary summarize(const std::vector<CaseResult>& results);
 std::string formatSummary(const Summary& s, const std::vector<CaseResult>& results);
 
 /** Checks `floors_text` (lines "<metric> <aggregate> <minimum>", '#' comments; metrics:
- * precision, recall, brokenness_exact, truth_min; aggregates: a kind, "pooled", "real" or
+ * precision, recall, brokenness_exact, clean_cases, truth_min, crop_within, explained_walls (the
+ * mean share of the map's walls explained); aggregates: a kind, "pooled", "real" or
  * "family:NAME", which fails when the run has no case of that family) against
  * the summary. Returns the failures, one line each; throws std::invalid_argument on a bad line. */
 std::vector<std::string> checkFloors(const Summary& s, const std::string& floors_text,

@@ -286,6 +286,7 @@ std::string casesJson(const std::vector<CaseResult>& results, const Summary& sum
         j.key("mean_coverage").value(a.mean_coverage, 4);
         j.key("max_coverage").value(a.max_coverage, 4);
         j.key("mean_quality").value(a.mean_quality, 4);
+        j.key("mean_explained_walls").value(a.mean_explained_walls, 4);
         j.endObject();
     };
     j.key("summary").beginObject();
