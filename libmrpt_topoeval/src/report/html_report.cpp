@@ -112,6 +112,34 @@ struct CellFrame
     double y(const Eigen::Vector2d& p) const { return (y_max - p.y()) * inv_res; }
 };
 
+/** The map's walls that no matched part explains (doc/quality.md, "Explained walls"), for the
+ * viewer to draw over the map's picture: {"block": k, "cells": [x0, y0, x1, y1, ...]}, the
+ * top-left cells (x from the left, y from the top) of the k x k blocks of cells that hold one,
+ * k the cells per pixel of the picture (fitInto(), opts.max_map_px): no more than the picture
+ * shows, however large the map. Sorted, so the page is deterministic. */
+void writeUnexplainedWalls(JsonWriter& w, const Grid& grid, const QualityReport& r, int max_px)
+{
+    const double longer = std::max(grid.getSizeX(), grid.getSizeY());
+    const long k = max_px > 0 ? std::max(1L, static_cast<long>(std::ceil(longer / max_px))) : 1L;
+    const CellFrame f(grid);
+    std::vector<std::pair<long, long>> blocks;
+    for (const Eigen::Vector2f& q : r.explained_walls.unexplained_m)
+    {
+        const Eigen::Vector2d p = q.cast<double>();
+        blocks.emplace_back(static_cast<long>(std::floor(f.y(p))) / k,
+                            static_cast<long>(std::floor(f.x(p))) / k);
+    }
+    std::sort(blocks.begin(), blocks.end());
+    blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+    w.beginObject(true);
+    w.key("block").value(static_cast<std::int64_t>(k));
+    w.key("cells").beginArray(true);
+    for (const auto& [by, bx] : blocks)
+        w.value(static_cast<std::int64_t>(bx * k)).value(static_cast<std::int64_t>(by * k));
+    w.endArray();
+    w.endObject();
+}
+
 /** An edge's path as SVG path data in cells, one decimal, points closer than half a cell to
  * the last one kept left out (the path's end is always kept). */
 std::string svgPath(const CellFrame& f, const std::vector<Eigen::Vector2d>& path)
@@ -462,6 +490,8 @@ HtmlEntry makeHtmlEntry(const std::string& name, const Grid& gt_grid, const Topo
         w.key("scans").value(static_cast<std::uint64_t>(row->scans));
     }
     writeReport(w, gt_graph, map_graph, report);
+    w.key("unexplained_walls");
+    writeUnexplainedWalls(w, grid, report, opts.max_map_px);
     if (with_thumbnail)
         w.key("thumbnail")
             .value(thumbnail(gt_grid, gt_graph, grid, map_graph, report, opts.thumbnail_px));
@@ -504,18 +534,20 @@ std::string renderHtmlReport(const HtmlReportContent& c)
     w.key("groups").beginArray(true);
     for (const cv::Scalar& s : internal::kGroupColours) w.value(hexColour(s));
     w.endArray();
-    for (const auto& [key, colour] : {std::make_pair("no_group", &internal::kNoGroupColour),
-                                      std::make_pair("unmatched", &internal::kUnmatchedColour),
-                                      std::make_pair("isomorphism", &internal::kIsomorphismLine),
-                                      std::make_pair("growing", &internal::kGrowingLine),
-                                      std::make_pair("missing", &internal::kMissingRing),
-                                      std::make_pair("edge", &internal::kEdgeColour),
-                                      std::make_pair("dead_end", &internal::kDeadEndEdgeColour),
-                                      std::make_pair("spurious", &internal::kSpuriousColour),
-                                      std::make_pair("degree1", &internal::kVertexDeg1Colour),
-                                      std::make_pair("degree2", &internal::kVertexDeg2Colour),
-                                      std::make_pair("degree3", &internal::kVertexDeg3Colour),
-                                      std::make_pair("degree4", &internal::kVertexDeg4PlusColour)})
+    for (const auto& [key, colour] :
+         {std::make_pair("no_group", &internal::kNoGroupColour),
+          std::make_pair("unmatched", &internal::kUnmatchedColour),
+          std::make_pair("isomorphism", &internal::kIsomorphismLine),
+          std::make_pair("growing", &internal::kGrowingLine),
+          std::make_pair("missing", &internal::kMissingRing),
+          std::make_pair("unexplained", &internal::kUnexplainedWallColour),
+          std::make_pair("edge", &internal::kEdgeColour),
+          std::make_pair("dead_end", &internal::kDeadEndEdgeColour),
+          std::make_pair("spurious", &internal::kSpuriousColour),
+          std::make_pair("degree1", &internal::kVertexDeg1Colour),
+          std::make_pair("degree2", &internal::kVertexDeg2Colour),
+          std::make_pair("degree3", &internal::kVertexDeg3Colour),
+          std::make_pair("degree4", &internal::kVertexDeg4PlusColour)})
         w.key(key).value(hexColour(*colour));
     w.endObject();
     w.endObject();

@@ -180,6 +180,15 @@
       g.appendChild(t);
       g.appendChild(sv('image', {href: m.image, x: 0, y: 0, width: m.size_x, height: m.size_y,
                                  preserveAspectRatio: 'none'}));
+      const uw = entry.unexplained_walls;
+      if (side === 'map' && uw && uw.cells.length) {
+        // The map's walls that no matched part explains, a square per block of cells.
+        let d = '';
+        for (let i = 0; i + 1 < uw.cells.length; i += 2)
+          d += 'M' + uw.cells[i] + ' ' + uw.cells[i + 1] + 'h' + uw.block + 'v' + uw.block +
+               'h-' + uw.block + 'z';
+        g.appendChild(sv('path', {class: 'unexplained', d: d, fill: C.unexplained}));
+      }
       const edges = sv('g', {class: 'edges'});
       for (const e of m.edges_unpacked)
         edges.appendChild(sv('path', {d: e.d, fill: 'none', 'vector-effect': 'non-scaling-stroke',
@@ -330,6 +339,7 @@
       el('button', {type: 'button', id: 'zoom-reset', onclick: () => {
         vb = Object.assign({}, full); apply(); }}, 'fit'),
       toggle('match lines', '.match-lines'), toggle('graphs', '.edges'),
+      toggle('unexplained walls', '.unexplained'),
       el('span', {class: 'muted', text: 'wheel: zoom, drag: pan, double-click: fit; hover a ' +
                                        'vertex or a match line for its attributes'}));
     const legend = el('div', {class: 'legend'},
@@ -348,6 +358,10 @@
          'matched, in no group'),
       el('span', {}, el('span', {class: 'swatch', style: 'background:' + C.unmatched}),
          'not matched'),
+      entry.explained_walls && entry.explained_walls.measured ?
+        el('span', {}, el('span', {class: 'swatch', style: 'background:' + C.unexplained}),
+           'map walls no part explains: ' +
+           (entry.explained_walls.wall_points - entry.explained_walls.explained)) : null,
       el('span', {}, el('span', {class: 'bar', style: 'background:' + C.edge}), 'edge'),
       el('span', {}, el('span', {class: 'bar', style: 'background:' + C.dead_end}), 'dead end'),
       el('span', {}, el('span', {class: 'bar', style: 'background:' + C.spurious}), 'spurious'));
