@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <future>
 #include <limits>
@@ -862,6 +863,18 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
             internal::wallTolerance(p.explained_wall_tolerance_m, ground_truth, placed);
         if (walls.ok())
             r.explained_walls = internal::explainedWalls(map, placed, fits, walls.gt(), tolerance);
+        const ExplainedWalls& ew = r.explained_walls;
+        if (ew.measured && ew.share < p.explained_walls_note_below)
+        {
+            char note[320];
+            std::snprintf(note, sizeof(note),
+                          "the match explains %.1f %% of the map's walls (%zu of %zu within %.2f m "
+                          "of a ground-truth wall under a part's fit): the rest, red in the "
+                          "picture, is where no matched part puts it, a part broken beyond what "
+                          "brokenness counts or what the ground truth lacks",
+                          100.0 * ew.share, ew.explained, ew.wall_points, ew.tolerance_m);
+            r.messages.push_back(note);
+        }
     }
 
     // Quality: weighted mean of coverage, relative accuracy, the mean of the non-empty
