@@ -75,13 +75,19 @@ std::string pngDataUrl(const cv::Mat& img)
     return "data:image/png;base64," + base64(png);
 }
 
+/** The factor fitInto() shrinks a `cols` x `rows` picture by: 1 if it fits in `max_px`. */
+double fitScale(int cols, int rows, int max_px)
+{
+    const int longer = std::max(cols, rows);
+    return longer <= max_px || max_px < 1 ? 1.0 : static_cast<double>(max_px) / longer;
+}
+
 /** `img` shrunk (area averaging, so thin walls stay visible) to at most `max_px` on its longer
  * side; unchanged if it fits. */
 cv::Mat fitInto(const cv::Mat& img, int max_px)
 {
-    const int longer = std::max(img.cols, img.rows);
-    if (longer <= max_px || max_px < 1) return img;
-    const double s = static_cast<double>(max_px) / longer;
+    const double s = fitScale(img.cols, img.rows, max_px);
+    if (s == 1.0) return img;
     cv::Mat out;
     cv::resize(img, out,
                cv::Size(std::max(1, static_cast<int>(std::lround(img.cols * s))),
@@ -115,12 +121,13 @@ struct CellFrame
 /** The map's walls that no matched part explains (doc/quality.md, "Explained walls"), for the
  * viewer to draw over the map's picture: {"block": k, "cells": [x0, y0, x1, y1, ...]}, the
  * top-left cells (x from the left, y from the top) of the k x k blocks of cells that hold one,
- * k the cells per pixel of the picture (fitInto(), opts.max_map_px): no more than the picture
+ * k the cells per pixel of the picture (fitScale(), opts.max_map_px): no more than the picture
  * shows, however large the map. Sorted, so the page is deterministic. */
 void writeUnexplainedWalls(JsonWriter& w, const Grid& grid, const QualityReport& r, int max_px)
 {
-    const double longer = std::max(grid.getSizeX(), grid.getSizeY());
-    const long k = max_px > 0 ? std::max(1L, static_cast<long>(std::ceil(longer / max_px))) : 1L;
+    const double s =
+        fitScale(static_cast<int>(grid.getSizeX()), static_cast<int>(grid.getSizeY()), max_px);
+    const long k = std::max(1L, static_cast<long>(std::ceil(1.0 / s - 1e-9)));
     const CellFrame f(grid);
     std::vector<std::pair<long, long>> blocks;
     for (const Eigen::Vector2f& q : r.explained_walls.unexplained_m)
