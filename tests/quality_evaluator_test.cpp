@@ -529,6 +529,8 @@ TEST(QualityEvaluator, ASmallPartsWallsVouchForItsTurn)
     const std::vector<double> turns = {-27.76, 2.20, -53.83};
     Parameters with = Parameters{}, without = Parameters{};
     without.quality.brokenness_walls_vouch = false;
+    // The rule alone: without it, a part placed by its walls (step 9) would count part 0 again.
+    with.quality.wall_parts = without.quality.wall_parts = false;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
     EXPECT_EQ(r.brokenness.degree, 2);
@@ -567,6 +569,9 @@ TEST(QualityEvaluator, ASmallPartThatItsWallsSetApartCounts)
         const auto [gt, map] = corpusCase("small_part_walls", c.name);
         Parameters with = Parameters{}, without = Parameters{};
         without.quality.brokenness_part_wall_ratio = 0.0;
+        // The rule alone: a part placed by its walls (step 9) finds corridor_office_1004's part
+        // 1 (turned 3.99 degrees) with or without it.
+        with.quality.wall_parts = without.quality.wall_parts = false;
         const QualityReport r = evaluate(gt, map, with);
         const QualityReport r0 = evaluate(gt, map, without);
         const std::set<int> parts = partsOfGroups(r, c.turns);
@@ -945,6 +950,63 @@ TEST(QualityEvaluator, CroppedMapCoversPart)
 
 // The map's side of coverage (doc/quality.md, "Explained walls"): each case's known answer
 // from the maps alone.
+// Brokenness step 9 (wall_parts): a part the match missed is placed by its walls. The known
+// answer: the campus broken once turns everything east of x = 16.5 m by 14 degrees, so the
+// missed part's T_gt_map turns by -14 degrees, and the breaks say where each of its vertices is.
+TEST(QualityEvaluator, APartTheMatchMissedIsPlacedByItsWalls)
+{
+    const auto campus = makeCampusMap();
+    TopologyGraph g, m;
+    const QualityReport full = evaluate(campus, brokenCampus(1), Parameters{}, &g, &m);
+    ASSERT_EQ(full.brokenness.degree, 1);
+    // The match without the turned part's pairs, as if the matcher had missed it.
+    GraphMatch missed = full.match;
+    const double cut = kBreaks[0].cut_x;
+    missed.pairs.erase(std::remove_if(missed.pairs.begin(), missed.pairs.end(),
+                                      [&](const VertexPair& p)
+                                      { return g.vertices[p.ground_truth].position_m.x() > cut; }),
+                       missed.pairs.end());
+    ASSERT_GE(missed.pairs.size(), 10u);
+    ASSERT_LT(missed.pairs.size(), full.match.pairs.size() - 10);
+    QualityParameters qp;
+    EXPECT_TRUE(qp.wall_parts);  // on by default
+    qp.wall_parts = false;
+    const QualityReport without = evaluateMatch(g, m, missed, qp);
+    EXPECT_EQ(without.brokenness.degree, 0);
+    EXPECT_LT(without.explained_walls.share, 0.9);
+
+    qp.wall_parts = true;
+    const QualityReport with = evaluateMatch(g, m, missed, qp);
+    ASSERT_EQ(with.brokenness.degree, 1);
+    const BrokennessGroup& part = with.brokenness.groups.back();
+    EXPECT_TRUE(part.by_walls);
+    EXPECT_FALSE(with.brokenness.groups.front().by_walls);
+    EXPECT_NEAR(std::remainder(part.transform.yaw_deg + kBreaks[0].yaw_deg, 360.0), 0.0, 0.5);
+    // Where it puts the part: the breaks' own place for every ground-truth point east of the cut.
+    for (const Eigen::Vector2d p : {Eigen::Vector2d(30.0, 10.0), Eigen::Vector2d(45.0, 25.0)})
+        EXPECT_LT((part.transform.apply(brokenPoint(1, p)) - p).norm(), 0.3) << p.transpose();
+    // Its pairs are not the match's, and each is true by the breaks.
+    EXPECT_EQ(with.match.pairs.size(), missed.pairs.size());
+    ASSERT_EQ(part.gt_vertices.size(), part.map_vertices.size());
+    EXPECT_GE(part.gt_vertices.size(), 3u);
+    for (std::size_t k = 0; k < part.gt_vertices.size(); ++k)
+        EXPECT_LT((brokenPoint(1, g.vertices[part.gt_vertices[k]].position_m) -
+                   m.vertices[part.map_vertices[k]].position_m)
+                      .norm(),
+                  1.0)
+            << "gt " << part.gt_vertices[k];
+    EXPECT_GT(part.offset_m, 1.0);
+    EXPECT_GE(with.explained_walls.share, 0.97);
+    EXPECT_LT(with.quality, without.quality);  // a break found costs
+    EXPECT_NE(with.briefReport().find("1 placed by its walls"), std::string::npos);
+
+    // Nothing is added where the groups explain the walls: the full match, the identical map.
+    EXPECT_EQ(evaluateMatch(g, m, full.match, qp).brokenness.degree, 1);
+    TopologyGraph sg, sm;
+    const QualityReport same = evaluate(campus, campus, Parameters{}, &sg, &sm);
+    EXPECT_EQ(evaluateMatch(sg, sm, same.match, qp).brokenness.groups.size(), 1u);
+}
+
 TEST(QualityEvaluator, ExplainedWallsAreTheMapsSideOfCoverage)
 {
     const COccupancyGridMap2D campus = makeCampusMap();

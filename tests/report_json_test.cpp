@@ -77,7 +77,7 @@ QualityReport tinyReport()
     r.brokenness.degree = 1;
     r.brokenness.score = 0.5;
     r.brokenness.groups = {{{2, 0, 1}, 0.0123456789, {0.1, -0.2, -69.5}},
-                           {{3}, 0.2, {0.0, 0.0, 21.8}, 1.23456789}};
+                           {{3}, 0.2, {0.0, 0.0, 21.8}, 1.23456789, true, {2}}};
     r.explained_walls.measured = true;
     r.explained_walls.wall_points = 3;
     r.explained_walls.explained = 2;
@@ -177,7 +177,8 @@ const char* const kTinyJsonHead = R"({
         "yaw_deg": -69.5,
         "x": 0.1,
         "y": -0.2,
-        "offset_m": 0
+        "offset_m": 0,
+        "by_walls": false
       },
       {
         "vertices": 1,
@@ -186,7 +187,9 @@ const char* const kTinyJsonHead = R"({
         "yaw_deg": 21.8,
         "x": 0,
         "y": 0,
-        "offset_m": 1.2346
+        "offset_m": 1.2346,
+        "by_walls": true,
+        "map_ids": [2]
       }
     ]
   },

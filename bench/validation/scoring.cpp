@@ -333,9 +333,11 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
         for (const auto& group : report.brokenness.groups)
         {
             std::map<int, int> votes;
-            for (int g : group.gt_vertices)
+            for (std::size_t k = 0; k < group.gt_vertices.size(); ++k)
             {
-                const int m = report.match.mapVertexOf(g);
+                // A part placed by its walls names its map vertices; the others are pairs.
+                const int g = group.gt_vertices[k];
+                const int m = group.by_walls ? group.map_vertices[k] : report.match.mapVertexOf(g);
                 if (m < 0) continue;
                 // A true pair's part is the one that makes it true; else the likeliest.
                 const int by = trueBy(g, m);
@@ -357,8 +359,11 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                     if (const auto fit = part_fit.find(l.part); fit != part_fit.end())
                         larger.push_back(fit->second);
                 std::vector<Eigen::Vector2d> points;
-                for (int v : group.gt_vertices)
-                    if (const int m = report.match.mapVertexOf(v); m >= 0)
+                for (std::size_t k = 0; k < group.gt_vertices.size(); ++k)
+                    if (const int m = group.by_walls
+                                          ? group.map_vertices[k]
+                                          : report.match.mapVertexOf(group.gt_vertices[k]);
+                        m >= 0)
                         points.push_back(map.vertices[static_cast<std::size_t>(m)].position_m);
                 const double offset = own == part_fit.end()
                                           ? std::numeric_limits<double>::infinity()

@@ -45,6 +45,11 @@ struct BrokennessGroup
      * |T(q) - T'(q)|, T this group's transform and T' the larger group's that places them
      * nearest [m]. 0 for the largest group. */
     double offset_m = 0.0;
+    /** Ours: a part the match missed, placed by its walls (wall_parts). Its `gt_vertices` are
+     * then the free ground-truth vertices it places near free map vertices, `map_vertices`
+     * those map vertices (pair by pair; not pairs of the match); its squared error theirs. */
+    bool by_walls = false;
+    std::vector<int> map_vertices;
 };
 
 /** Brokenness (paper IV): how many locally consistent parts are misplaced against each other. */

@@ -1,6 +1,7 @@
 /* mrpt_topoeval: map quality by Topology Graph matching (Schwertfeger & Birk 2013). BSD-3. */
 #include <mrpt_topoeval/QualityReport.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -50,8 +51,12 @@ std::string QualityReport::briefReport() const
          fmt("%.3f", global_accuracy.rmse_m) + " m rmse\n";
     s += "consistency " + consistencyLine(*this) + "\n";
     const std::size_t ng = brokenness.groups.size();
+    const auto by_walls = std::count_if(brokenness.groups.begin(), brokenness.groups.end(),
+                                        [](const BrokennessGroup& g) { return g.by_walls; });
     s += "brokenness  " + std::to_string(brokenness.degree) + " (" + std::to_string(ng) +
-         (ng == 1 ? " group" : " groups") + ")\n";
+         (ng == 1 ? " group" : " groups") +
+         (by_walls ? ", " + std::to_string(by_walls) + " placed by its walls" : std::string()) +
+         ")\n";
     if (explained_walls.measured)
         s += "walls       " + fmt("%.3f", explained_walls.share) +
              " of the map's wall points explained (" + std::to_string(explained_walls.explained) +
@@ -92,9 +97,11 @@ std::string QualityReport::fullReport() const
     {
         const auto& g = brokenness.groups[i];
         char line[160];
-        std::snprintf(line, sizeof(line), "            %5zu  %8zu  %9.3f m^2  %6.1f deg  %s\n", i,
-                      g.gt_vertices.size(), g.squared_error_m2, g.transform.yaw_deg,
-                      i ? fmt("%6.2f m", g.offset_m).c_str() : "     -");
+        std::snprintf(
+            line, sizeof(line), "            %5zu  %8zu  %9.3f m^2  %6.1f deg  %s\n", i,
+            g.gt_vertices.size(), g.squared_error_m2, g.transform.yaw_deg,
+            i ? (fmt("%6.2f m", g.offset_m) + (g.by_walls ? "  (by its walls)" : "")).c_str()
+              : "     -");
         s += line;
     }
     for (const auto& m : messages) s += "note        " + m + "\n";

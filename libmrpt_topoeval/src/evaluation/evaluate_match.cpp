@@ -21,6 +21,7 @@
 
 #include "evaluation/evaluate_match_at.h"
 #include "evaluation/explained_walls.h"
+#include "evaluation/wall_parts.h"
 #include "evaluation/wall_places.h"
 #include "geometry/horn.h"
 #include "geometry/rigid_split.h"
@@ -847,6 +848,59 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     {
         internal::Walls own(ground_truth, map_for_brokenness);
         r.brokenness = brokenness(ground_truth, map_for_brokenness, gt_view, match, p, own);
+    }
+
+    // Brokenness step 9 (ours, wall_parts): a region of the map's walls that no group explains,
+    // placed clearly by one rigid fit of its own, is a part the match missed (doc/quality.md,
+    // "A part placed by its walls").
+    if (p.wall_parts && walls.ok() && !r.brokenness.groups.empty())
+    {
+        const TopologyGraph& placed = map_for_brokenness;
+        std::vector<Transform2D> fits;
+        for (const BrokennessGroup& g : r.brokenness.groups) fits.push_back(g.transform);
+        std::vector<char> gt_free(ground_truth.vertices.size(), 0),
+            map_free(placed.vertices.size(), 0);
+        for (const auto& v : ground_truth.vertices) gt_free[size_t(v.id)] = !v.spurious;
+        for (const auto& v : placed.vertices) map_free[size_t(v.id)] = !v.spurious;
+        for (const auto& pr : match.pairs)
+            gt_free[size_t(pr.ground_truth)] = 0, map_free[size_t(pr.map)] = 0;
+        internal::WallPartRule rule;
+        rule.explained_tolerance_m =
+            internal::wallTolerance(p.explained_wall_tolerance_m, ground_truth, placed);
+        rule.tolerance_m = internal::wallTolerance(p.wall_part_tolerance_m, ground_truth, placed);
+        rule.link_m = p.wall_part_link_m;
+        rule.min_length_m = p.wall_part_min_length_m;
+        rule.min_share = p.wall_part_min_share;
+        rule.max_runner_up = p.wall_part_max_runner_up;
+        rule.turn_step_deg = p.wall_part_turn_step_deg;
+        rule.pair_distance_m = p.wall_part_pair_distance_m;
+        std::vector<Transform2D> larger = fits;
+        for (internal::WallPart& part : internal::findWallParts(ground_truth, placed, walls.gt(),
+                                                                fits, gt_free, map_free, rule))
+        {
+            BrokennessGroup g;
+            g.by_walls = true;
+            g.transform = part.transform;
+            double pairs_sq = 0.0;
+            for (const auto& [a, b] : part.pairs)
+            {
+                g.gt_vertices.push_back(a);
+                g.map_vertices.push_back(b);
+                pairs_sq += (ground_truth.vertices[size_t(a)].position_m -
+                             part.transform.apply(placed.vertices[size_t(b)].position_m))
+                                .squaredNorm();
+            }
+            g.squared_error_m2 = part.pairs.empty() ? 0.0 : pairs_sq / double(part.pairs.size());
+            // How far it is off, as for the other groups: over its vertices' map partners, or
+            // its region's wall points when it places no vertex.
+            std::vector<Eigen::Vector2d> at;
+            for (const int m : g.map_vertices) at.push_back(placed.vertices[size_t(m)].position_m);
+            g.offset_m = internal::partOffset(g.transform, larger, at.empty() ? part.points : at);
+            larger.push_back(g.transform);
+            r.brokenness.groups.push_back(std::move(g));
+        }
+        r.brokenness.degree = int(r.brokenness.groups.size()) - 1;
+        r.brokenness.score = 1.0 / (1.0 + r.brokenness.degree);
     }
 
     // The map's walls that the match explains: each placed by the part whose transform puts it

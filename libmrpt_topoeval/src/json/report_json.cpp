@@ -109,6 +109,14 @@ void writeBrokenness(JsonWriter& w, const Brokenness& b)
         w.key("x").value(g.transform.x_m, kMetreDecimals);
         w.key("y").value(g.transform.y_m, kMetreDecimals);
         w.key("offset_m").value(g.offset_m, kMetreDecimals);
+        // A part placed by its walls (wall_parts): its map vertices, pair by pair.
+        w.key("by_walls").value(g.by_walls);
+        if (g.by_walls)
+        {
+            w.key("map_ids").beginArray(true);
+            for (const int id : g.map_vertices) w.value(id);
+            w.endArray();
+        }
         w.endObject();
     }
     w.endArray();

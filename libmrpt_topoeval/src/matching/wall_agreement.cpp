@@ -291,7 +291,6 @@ std::optional<Transform2D> alignWallsByIcp(const TopologyGraph& gt, const Topolo
                                            double margin_m, const Transform2D& start,
                                            double reach_m)
 {
-    constexpr int kWallIcpIterations = 60;
     constexpr std::size_t kMinWallPoints = 20;
     auto cloud = [&](const TopologyGraph& g, const WallIndex& index, bool ground_truth)
     {
@@ -305,7 +304,15 @@ std::optional<Transform2D> alignWallsByIcp(const TopologyGraph& gt, const Topolo
     const mrpt::maps::CSimplePointsMap walls_gt = cloud(gt, gt_walls, true),
                                        walls_map = cloud(map, map_walls, false);
     if (walls_gt.size() < kMinWallPoints || walls_map.size() < kMinWallPoints) return std::nullopt;
-    const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
+    return icpOfWalls(walls_gt, walls_map, start,
+                      std::max(gt.map.resolution_m, map.map.resolution_m), reach_m);
+}
+
+Transform2D icpOfWalls(const mrpt::maps::CSimplePointsMap& reference,
+                       const mrpt::maps::CSimplePointsMap& cloud, const Transform2D& start,
+                       double res, double reach_m)
+{
+    constexpr int kWallIcpIterations = 60;
     mrpt::slam::CICP::TConfigParams o;
     o.ICP_algorithm = mrpt::slam::icpClassic;
     o.maxIterations = kWallIcpIterations;
@@ -320,7 +327,7 @@ std::optional<Transform2D> alignWallsByIcp(const TopologyGraph& gt, const Topolo
     // The ground truth's walls are the reference; the map's walls' pose in its frame is the
     // map -> ground truth transform.
     const auto pose =
-        icp.Align(&walls_gt, &walls_map,
+        icp.Align(&reference, &cloud,
                   mrpt::poses::CPose2D(start.x_m, start.y_m, mrpt::DEG2RAD(start.yaw_deg)), info)
             ->getMeanVal();
     return Transform2D{pose.x(), pose.y(), mrpt::RAD2DEG(pose.phi())};

@@ -153,4 +153,11 @@ std::optional<Transform2D> alignWallsByIcp(const TopologyGraph& gt, const Topolo
                                            double margin_m, const Transform2D& start,
                                            double reach_m);
 
+/** MRPT's CICP (classic, 60 iterations) of `cloud` (map wall points) onto `reference`
+ * (ground-truth wall points) from `start` (map -> ground truth): its first matching distance
+ * the larger of 3 cells (`res`) and `reach_m`, halved down to two cells. */
+Transform2D icpOfWalls(const mrpt::maps::CSimplePointsMap& reference,
+                       const mrpt::maps::CSimplePointsMap& cloud, const Transform2D& start,
+                       double res, double reach_m);
+
 }  // namespace mrpt_topoeval::internal
