@@ -56,8 +56,9 @@ struct BrokennessGroup
 struct Brokenness
 {
     int degree = 0;  //!< Accepted groups - 1 (0 when there is at most one group).
-    std::vector<BrokennessGroup> groups;  //!< Accepted groups, largest first.
-    double score = 0.0;                   //!< 1 / (1 + degree); 0 when nothing matched.
+    /** Accepted groups, largest first; the parts placed by their walls (by_walls) after them. */
+    std::vector<BrokennessGroup> groups;
+    double score = 0.0;  //!< 1 / (1 + degree); 0 when nothing matched.
 };
 
 /** Ours (issue 11): the map's side of coverage. Coverage counts the ground truth's vertices

@@ -864,9 +864,11 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
         for (const auto& v : placed.vertices) map_free[size_t(v.id)] = !v.spurious;
         for (const auto& pr : match.pairs)
             gt_free[size_t(pr.ground_truth)] = 0, map_free[size_t(pr.map)] = 0;
+        // The walls no group explains, by the explained walls' own rule, in placed's frame.
+        const ExplainedWalls before = internal::explainedWalls(
+            placed, placed, fits, walls.gt(),
+            internal::wallTolerance(p.explained_wall_tolerance_m, ground_truth, placed));
         internal::WallPartRule rule;
-        rule.explained_tolerance_m =
-            internal::wallTolerance(p.explained_wall_tolerance_m, ground_truth, placed);
         rule.tolerance_m = internal::wallTolerance(p.wall_part_tolerance_m, ground_truth, placed);
         rule.link_m = p.wall_part_link_m;
         rule.min_length_m = p.wall_part_min_length_m;
@@ -875,8 +877,8 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
         rule.turn_step_deg = p.wall_part_turn_step_deg;
         rule.pair_distance_m = p.wall_part_pair_distance_m;
         std::vector<Transform2D> larger = fits;
-        for (internal::WallPart& part : internal::findWallParts(ground_truth, placed, walls.gt(),
-                                                                fits, gt_free, map_free, rule))
+        for (internal::WallPart& part : internal::findWallParts(
+                 ground_truth, placed, walls.gt(), before.unexplained_m, gt_free, map_free, rule))
         {
             BrokennessGroup g;
             g.by_walls = true;

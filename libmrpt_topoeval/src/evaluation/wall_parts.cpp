@@ -118,26 +118,15 @@ std::vector<std::vector<Eigen::Vector2d>> regionsOf(const std::vector<Eigen::Vec
 }  // namespace
 
 std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph& placed,
-                                    const WallIndex& gt_walls, const std::vector<Transform2D>& fits,
+                                    const WallIndex& gt_walls,
+                                    const std::vector<Eigen::Vector2f>& unexplained,
                                     const std::vector<char>& gt_free,
                                     const std::vector<char>& map_free, const WallPartRule& rule)
 {
     std::vector<WallPart> parts;
-    if (fits.empty() || gt_walls.empty() || placed.wall_points_m.empty()) return parts;
-    // The walls no part explains (as the explained walls count them).
+    if (gt_walls.empty() || unexplained.empty()) return parts;
     std::vector<Eigen::Vector2d> rest;
-    for (const auto& w : placed.wall_points_m)
-    {
-        const Eigen::Vector2d q = w.cast<double>();
-        bool explained = false;
-        for (const Transform2D& t : fits)
-            if (gt_walls.near(t.apply(q), rule.explained_tolerance_m))
-            {
-                explained = true;
-                break;
-            }
-        if (!explained) rest.push_back(q);
-    }
+    for (const auto& w : unexplained) rest.push_back(w.cast<double>());
     const double cell = std::max(placed.map.resolution_m, 1e-6);
     if (double(rest.size()) * cell < rule.min_length_m) return parts;
 

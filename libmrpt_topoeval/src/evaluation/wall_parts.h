@@ -19,14 +19,13 @@ namespace mrpt_topoeval::internal
  * cells. */
 struct WallPartRule
 {
-    double explained_tolerance_m = 0.3;  //!< a wall point some fit explains (explained walls)
-    double tolerance_m = 0.15;           //!< a region's point placed on a ground-truth wall
-    double link_m = 2.0;                 //!< wall points this near are one region
-    double min_length_m = 20.0;          //!< the least wall of a region (points x cell size)
-    double min_share = 0.95;             //!< the placement's share of points on a wall
-    double max_runner_up = 0.8;          //!< the next distinct placement's share / the best's
-    double turn_step_deg = 3.0;          //!< the turns tried before ICP
-    double pair_distance_m = 0.5;        //!< a placed ground-truth vertex's map vertex
+    double tolerance_m = 0.15;     //!< a region's point placed on a ground-truth wall
+    double link_m = 2.0;           //!< wall points this near are one region
+    double min_length_m = 20.0;    //!< the least wall of a region (points x cell size)
+    double min_share = 0.95;       //!< the placement's share of points on a wall
+    double max_runner_up = 0.8;    //!< the next distinct placement's share / the best's
+    double turn_step_deg = 3.0;    //!< the turns tried before ICP
+    double pair_distance_m = 0.5;  //!< a placed ground-truth vertex's map vertex
 };
 
 /** One part placed by its walls. */
@@ -39,15 +38,17 @@ struct WallPart
     std::vector<std::pair<int, int>> pairs;  //!< (ground truth, map): free vertices it places
 };
 
-/** The regions of `placed`'s wall points that none of `fits` explains, each placed on the ground
- * truth's walls from every free map vertex near it paired with every free ground-truth vertex
- * (`*_free`: 1 for a matchable vertex of no pair), under turns of `turn_step_deg`, the best
- * distinct placements refined by MRPT's ICP; a region whose best placement puts at least
- * `min_share` of its points on a wall, and whose next distinct one (5 degrees or 0.5 m away)
- * at most `max_runner_up` of that, is a part. Largest region first; a region an accepted part
- * already places is not placed again. Deterministic. */
+/** The regions of `unexplained` (wall points of `placed` that no brokenness group explains, in
+ * its frame: explainedWalls()'s), each placed on the ground truth's walls from every free map
+ * vertex near it paired with every free ground-truth vertex (`*_free`: 1 for a matchable vertex
+ * of no pair), under turns of `turn_step_deg`, the best distinct placements refined by MRPT's
+ * ICP; a region whose best placement puts at least `min_share` of its points on a wall, and
+ * whose next distinct one (5 degrees or 0.5 m away at the region's centre) at most
+ * `max_runner_up` of that, is a part. Largest region first; a region an accepted part already
+ * places is not placed again. Deterministic. */
 std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph& placed,
-                                    const WallIndex& gt_walls, const std::vector<Transform2D>& fits,
+                                    const WallIndex& gt_walls,
+                                    const std::vector<Eigen::Vector2f>& unexplained,
                                     const std::vector<char>& gt_free,
                                     const std::vector<char>& map_free, const WallPartRule& rule);
 }  // namespace mrpt_topoeval::internal
