@@ -1,6 +1,8 @@
 #!/usr/bin/python3
-"""Could the walls no matched part explains find the parts the match missed? A measurement, not a
-method of the library (doc/validation.md, "Session 43").
+"""Could the walls no matched part explains find the parts the match missed? The measurement that
+led to the library's brokenness step 9, "A part placed by its walls" (doc/quality.md), kept to
+re-ask the question outside the library, e.g. of the small ground truths that match nothing
+(`--whole`, not in the library); doc/validation.md, "Session 43".
 
 Session 42 found that a broken map whose match missed a part explains less of its walls
 (doc/quality.md, "Explained walls"): the missed part's walls are the red ones. This script asks
