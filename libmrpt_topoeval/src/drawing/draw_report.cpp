@@ -159,7 +159,8 @@ mrpt::img::CImage drawQualityReport(const Grid& gt_grid, const TopologyGraph& gt
         groups.push_back({"group " + std::to_string(gi) + ": " +
                               std::to_string(g.gt_vertices.size()) + " vertices, yaw " +
                               fmt("%.1f", g.transform.yaw_deg) + " deg" +
-                              (gi ? ", off by " + fmt("%.2f", g.offset_m) + " m" : ""),
+                              (gi ? ", off by " + fmt("%.2f", g.offset_m) + " m" : "") +
+                              (g.by_walls ? ", placed by its walls" : ""),
                           groupColour(static_cast<int>(gi)), Mark::Dot});
     }
     groups.push_back({"matched, in no group", kNoGroupColour, Mark::Dot});
