@@ -330,14 +330,19 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
         for (const auto& [part, pts] : part_points)
             if (pts.first.size() >= 3) part_fit[part] = internal::hornAlign(pts.first, pts.second);
         double worst = 0.0;
+        // The map vertex of a group's k-th ground-truth vertex: a part placed by its walls names
+        // its map vertices; the others' are their pairs'.
+        auto mapVertexOf = [&](const BrokennessGroup& group, std::size_t k) {
+            return group.by_walls ? group.map_vertices[k]
+                                  : report.match.mapVertexOf(group.gt_vertices[k]);
+        };
         for (const auto& group : report.brokenness.groups)
         {
             std::map<int, int> votes;
             for (std::size_t k = 0; k < group.gt_vertices.size(); ++k)
             {
-                // A part placed by its walls names its map vertices; the others are pairs.
                 const int g = group.gt_vertices[k];
-                const int m = group.by_walls ? group.map_vertices[k] : report.match.mapVertexOf(g);
+                const int m = mapVertexOf(group, k);
                 if (m < 0) continue;
                 // A true pair's part is the one that makes it true; else the likeliest.
                 const int by = trueBy(g, m);
@@ -360,10 +365,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
                         larger.push_back(fit->second);
                 std::vector<Eigen::Vector2d> points;
                 for (std::size_t k = 0; k < group.gt_vertices.size(); ++k)
-                    if (const int m = group.by_walls
-                                          ? group.map_vertices[k]
-                                          : report.match.mapVertexOf(group.gt_vertices[k]);
-                        m >= 0)
+                    if (const int m = mapVertexOf(group, k); m >= 0)
                         points.push_back(map.vertices[static_cast<std::size_t>(m)].position_m);
                 const double offset = own == part_fit.end()
                                           ? std::numeric_limits<double>::infinity()

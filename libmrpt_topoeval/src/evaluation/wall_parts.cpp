@@ -8,6 +8,8 @@
 #include <map>
 #include <numeric>
 
+#include "common/union_find.h"
+
 namespace mrpt_topoeval::internal
 {
 namespace
@@ -29,14 +31,6 @@ struct Placement
     double share = 0.0;
     Transform2D t;
 };
-
-std::vector<Eigen::Vector2d> thinned(const std::vector<Eigen::Vector2d>& p, std::size_t n)
-{
-    if (p.size() <= n) return p;
-    std::vector<Eigen::Vector2d> out;
-    for (std::size_t i = 0; i < n; ++i) out.push_back(p[i * p.size() / n]);
-    return out;
-}
 
 double shareOn(const WallIndex& gt_walls, const std::vector<Eigen::Vector2d>& pts,
                const Transform2D& t, double tolerance_m)
@@ -77,13 +71,7 @@ std::vector<Placement> distinct(const std::vector<Placement>& sorted, std::size_
 std::vector<std::vector<Eigen::Vector2d>> regionsOf(const std::vector<Eigen::Vector2d>& pts,
                                                     double link)
 {
-    std::vector<std::size_t> parent(pts.size());
-    std::iota(parent.begin(), parent.end(), std::size_t{0});
-    auto root = [&](std::size_t i)
-    {
-        while (parent[i] != i) i = parent[i] = parent[parent[i]];
-        return i;
-    };
+    UnionFind sets(pts.size());
     std::map<std::pair<long, long>, std::vector<std::size_t>> cells;
     auto cellOf = [&](const Eigen::Vector2d& p)
     { return std::make_pair(long(std::floor(p.x() / link)), long(std::floor(p.y() / link))); };
@@ -99,7 +87,7 @@ std::vector<std::vector<Eigen::Vector2d>> regionsOf(const std::vector<Eigen::Vec
                 if (it == cells.end()) continue;
                 for (std::size_t j : it->second)
                     if (j > i && (pts[i] - pts[j]).squaredNorm() <= link2)
-                        parent[root(j)] = root(i);
+                        sets.unite(int(i), int(j));
             }
     }
     // Regions numbered by their first point, then ordered by size (largest first).
@@ -107,7 +95,7 @@ std::vector<std::vector<Eigen::Vector2d>> regionsOf(const std::vector<Eigen::Vec
     std::vector<std::vector<Eigen::Vector2d>> out;
     for (std::size_t i = 0; i < pts.size(); ++i)
     {
-        const auto [it, fresh] = label_of_root.emplace(root(i), out.size());
+        const auto [it, fresh] = label_of_root.emplace(std::size_t(sets.find(int(i))), out.size());
         if (fresh) out.emplace_back();
         out[it->second].push_back(pts[i]);
     }
@@ -148,7 +136,7 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
     for (const auto& region : regionsOf(rest, rule.link_m))
     {
         if (double(region.size()) * cell < rule.min_length_m) break;
-        const std::vector<Eigen::Vector2d> scored = thinned(region, kScoredPoints);
+        const std::vector<Eigen::Vector2d> scored = evenlyThinned(region, kScoredPoints);
         Eigen::Vector2d centre = Eigen::Vector2d::Zero();
         for (const auto& q : region) centre += q;
         centre /= double(region.size());

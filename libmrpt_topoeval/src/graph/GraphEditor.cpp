@@ -7,6 +7,8 @@
 #include <numeric>
 #include <tuple>
 
+#include "common/union_find.h"
+
 namespace mrpt_topoeval::internal
 {
 namespace
@@ -25,21 +27,6 @@ double polylineLength(const std::vector<Eigen::Vector2d>& path)
     return len;
 }
 
-struct UnionFind
-{
-    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int x)
-    {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(int a, int b)
-    {
-        a = find(a), b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-    std::vector<int> parent;
-};
 }  // namespace
 
 int GraphEditor::addVertex(const Eigen::Vector2d& pos, double clearance)

@@ -227,14 +227,16 @@ const std::vector<Eigen::Vector2d>& WallIndex::aroundVertices(const TopologyGrap
     { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
     std::sort(pts.begin(), pts.end(), less);
     pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-    if (max_points > 0 && pts.size() > max_points)
-    {
-        std::vector<Eigen::Vector2d> thin;
-        for (std::size_t k = 0; k < max_points; ++k)
-            thin.push_back(pts[k * pts.size() / max_points]);
-        pts.swap(thin);
-    }
+    if (max_points > 0) pts = evenlyThinned(pts, max_points);
     return pts;
+}
+
+std::vector<Eigen::Vector2d> evenlyThinned(const std::vector<Eigen::Vector2d>& pts, std::size_t n)
+{
+    if (pts.size() <= n) return pts;
+    std::vector<Eigen::Vector2d> thin;
+    for (std::size_t k = 0; k < n; ++k) thin.push_back(pts[k * pts.size() / n]);
+    return thin;
 }
 
 WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,

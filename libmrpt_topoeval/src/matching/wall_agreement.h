@@ -153,6 +153,9 @@ std::optional<Transform2D> alignWallsByIcp(const TopologyGraph& gt, const Topolo
                                            double margin_m, const Transform2D& start,
                                            double reach_m);
 
+/** `pts` evenly thinned to `n` points (every pts.size() / n-th, in order); all when no more. */
+std::vector<Eigen::Vector2d> evenlyThinned(const std::vector<Eigen::Vector2d>& pts, std::size_t n);
+
 /** MRPT's CICP (classic, 60 iterations) of `cloud` (map wall points) onto `reference`
  * (ground-truth wall points) from `start` (map -> ground truth): its first matching distance
  * the larger of 3 cells (`res`) and `reach_m`, halved down to two cells. */
