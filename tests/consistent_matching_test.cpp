@@ -1116,13 +1116,15 @@ std::function<int(int, int)> partOfTruth(std::vector<TruthPair> truth)
     };
 }
 
-// The matcher's rules alone: the default parameters without brokenness's step 9 (a part
-// placed by its walls, doc/quality.md), which would find, by its walls, parts that the runs
-// below without a rule miss, and so hide what each rule finds.
+// The matcher's rules alone: the default parameters without brokenness's steps 9 and 10 (a
+// part, or a map that matched nothing, placed by its walls; doc/quality.md), which would find,
+// by their walls, parts that the runs below without a rule miss (three of these maps, matched
+// nothing without their rule, are placed by their walls), and so hide what each rule finds.
 Parameters rulesAlone()
 {
     Parameters p;
     p.quality.wall_parts = false;
+    p.quality.map_by_walls = false;
     return p;
 }
 

@@ -1007,6 +1007,74 @@ TEST(QualityEvaluator, APartTheMatchMissedIsPlacedByItsWalls)
     EXPECT_EQ(evaluateMatch(sg, sm, same.match, qp).brokenness.groups.size(), 1u);
 }
 
+// A map the match holds no group of (map_by_walls): placed part by part by its walls. The known
+// answer: the campus broken once, given to evaluateMatch() with no pair (as a flat's graph of a
+// few vertices gives none), is two parts, the one west of the cut as it was and the one east of
+// it turned by 14 degrees; every pair its parts make is where the breaks put its ground-truth
+// vertex. Another building is not placed.
+TEST(QualityEvaluator, AMapTheMatchCannotGroupIsPlacedByItsWalls)
+{
+    TopologyGraph g, m;
+    evaluate(makeCampusMap(), brokenCampus(1), Parameters{}, &g, &m);
+    QualityParameters qp;
+    EXPECT_TRUE(qp.map_by_walls);  // on by default
+    qp.map_by_walls = false;
+    const QualityReport paper = evaluateMatch(g, m, GraphMatch{}, qp);
+    EXPECT_EQ(paper.quality, 0.0);
+    EXPECT_TRUE(paper.brokenness.groups.empty());
+
+    qp.map_by_walls = true;
+    const QualityReport r = evaluateMatch(g, m, GraphMatch{}, qp);
+    ASSERT_EQ(r.brokenness.degree, 1);
+    // Each part's fit puts the broken campus back where the campus is, on its side of the cut.
+    const Transform2D* west = nullptr;
+    const Transform2D* east = nullptr;
+    for (const BrokennessGroup& part : r.brokenness.groups)
+    {
+        EXPECT_TRUE(part.by_walls);
+        if (std::abs(std::remainder(part.transform.yaw_deg, 360.0)) < 0.5) west = &part.transform;
+        if (std::abs(std::remainder(part.transform.yaw_deg + kBreaks[0].yaw_deg, 360.0)) < 0.5)
+            east = &part.transform;
+    }
+    ASSERT_TRUE(west && east);
+    for (const Eigen::Vector2d p : {Eigen::Vector2d(5.0, 5.0), Eigen::Vector2d(10.0, 20.0)})
+        EXPECT_LT((west->apply(brokenPoint(1, p)) - p).norm(), 0.3) << p.transpose();
+    for (const Eigen::Vector2d p : {Eigen::Vector2d(30.0, 10.0), Eigen::Vector2d(45.0, 25.0)})
+        EXPECT_LT((east->apply(brokenPoint(1, p)) - p).norm(), 0.3) << p.transpose();
+    // Its pairs are the match, each true by the breaks: where one part puts its ground-truth
+    // vertex (a vertex at the cut is made by both parts' walls, as the validator's truth says).
+    ASSERT_GE(r.match.pairs.size(), 20u);
+    EXPECT_EQ(r.match.byWalls(), r.match.pairs.size());
+    const Break b = kBreaks[0];
+    auto turned = [&](const Eigen::Vector2d& p)
+    {
+        return breakPoint(
+            {b.cut_x, b.pivot_y}, b.yaw_deg * kDeg, [](double, double) { return true; }, p);
+    };
+    for (const VertexPair& pr : r.match.pairs)
+    {
+        const Eigen::Vector2d& p = g.vertices[pr.ground_truth].position_m;
+        const Eigen::Vector2d& q = m.vertices[pr.map].position_m;
+        EXPECT_LT(std::min((p - q).norm(), (turned(p) - q).norm()), 1.0)
+            << "gt " << pr.ground_truth << ", map " << pr.map;
+    }
+    EXPECT_GT(r.coverage, 0.5);
+    EXPECT_GT(r.quality, 0.3);
+    EXPECT_NE(r.briefReport().find("placed by walls"), std::string::npos);
+    EXPECT_NE(r.briefReport().find("2 placed by its walls"), std::string::npos);
+
+    // Another building (the office) and the campus's own twin of another seed: nothing placed.
+    for (const COccupancyGridMap2D& other : {makeOfficeMap(), makeCampusMap(2)})
+    {
+        TopologyGraph og, om;
+        evaluate(makeCampusMap(), other, Parameters{}, &og, &om);
+        const QualityReport o = evaluateMatch(og, om, GraphMatch{}, qp);
+        EXPECT_TRUE(o.match.pairs.empty());
+        EXPECT_TRUE(o.brokenness.groups.empty());
+        EXPECT_EQ(o.quality, 0.0);
+    }
+}
+
 TEST(QualityEvaluator, ExplainedWallsAreTheMapsSideOfCoverage)
 {
     const COccupancyGridMap2D campus = makeCampusMap();

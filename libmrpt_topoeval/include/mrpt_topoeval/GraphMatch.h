@@ -12,10 +12,12 @@ namespace mrpt_topoeval
 enum class MatchStage
 {
     Isomorphism,
-    NeighbourGrowing
+    NeighbourGrowing,
+    /** Ours: a vertex pair of a map placed by its walls (QualityParameters::map_by_walls). */
+    Walls
 };
 
-/** "isomorphism" / "neighbour_growing". */
+/** "isomorphism" / "neighbour_growing" / "walls". */
 std::string toString(MatchStage s);
 
 /** One assigned vertex pair. */
@@ -44,6 +46,8 @@ struct GraphMatch
     /** Milliseconds per stage ("similarity", "isomorphism", "neighbour_growing", "total"). */
     std::map<std::string, double> timing_ms;
 
+    /** Pairs of a map placed by its walls (stage Walls). */
+    std::size_t byWalls() const;
     /** The map vertex matched to ground-truth vertex `gt`, or -1. */
     int mapVertexOf(int gt) const;
     /** The ground-truth vertex matched to map vertex `m`, or -1. */

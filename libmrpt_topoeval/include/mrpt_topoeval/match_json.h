@@ -19,8 +19,8 @@ namespace mrpt_topoeval
  *   "matches": {
  *     "isomorphism": n, "neighbour_growing": n, "missing": n,   (the paper's Table II)
  *     "isomorphisms": [size, ...],                               (in the order found)
- *     "pairs": [{"ground_truth": id, "map": id, "stage": "isomorphism" | "neighbour_growing",
- *                "similarity": s, "isomorphism_index": k}, ...],
+ *     "pairs": [{"ground_truth": id, "map": id, "stage": "isomorphism" | "neighbour_growing"
+ *                | "walls", "similarity": s, "isomorphism_index": k}, ...],
  *     "messages": ["...", ...]
  *   },
  *   "timing_ms": {...}

@@ -164,7 +164,8 @@ MatchPicture drawMatchPicture(const Grid& gt_grid, const TopologyGraph& gt, cons
                        kMissingRing, 2, cv::LINE_AA, kShift);
 
     // Match lines, isomorphism first so the rarer neighbour-growing lines stay on top.
-    for (const MatchStage stage : {MatchStage::Isomorphism, MatchStage::NeighbourGrowing})
+    for (const MatchStage stage :
+         {MatchStage::Isomorphism, MatchStage::NeighbourGrowing, MatchStage::Walls})
         for (const VertexPair& p : match.pairs)
         {
             if (p.stage != stage) continue;
@@ -172,8 +173,10 @@ MatchPicture drawMatchPicture(const Grid& gt_grid, const TopologyGraph& gt, cons
                 gt.vertices[static_cast<std::size_t>(p.ground_truth)].position_m;
             const Eigen::Vector2d& b = map.vertices[static_cast<std::size_t>(p.map)].position_m;
             cv::line(canvas, left.fixedPoint(a), right.fixedPoint(b),
-                     stage == MatchStage::Isomorphism ? kIsomorphismLine : kGrowingLine, 2,
-                     cv::LINE_AA, kShift);
+                     stage == MatchStage::Isomorphism ? kIsomorphismLine
+                     : stage == MatchStage::Walls     ? internal::kWallsLine
+                                                      : kGrowingLine,
+                     2, cv::LINE_AA, kShift);
         }
     return {canvas, left, right};
 }
@@ -181,10 +184,14 @@ MatchPicture drawMatchPicture(const Grid& gt_grid, const TopologyGraph& gt, cons
 std::vector<LegendEntry> matchLegendEntries(const GraphMatch& match)
 {
     using Mark = LegendEntry::Mark;
-    return {
+    std::vector<LegendEntry> out = {
         {"isomorphism: " + std::to_string(match.isomorphism), kIsomorphismLine, Mark::Line},
-        {"neighbour growing: " + std::to_string(match.neighbour_growing), kGrowingLine, Mark::Line},
-        {"missing: " + std::to_string(match.missing), kMissingRing, Mark::Ring}};
+        {"neighbour growing: " + std::to_string(match.neighbour_growing), kGrowingLine,
+         Mark::Line}};
+    if (const std::size_t n = match.byWalls(); n > 0)
+        out.push_back({"placed by walls: " + std::to_string(n), internal::kWallsLine, Mark::Line});
+    out.push_back({"missing: " + std::to_string(match.missing), kMissingRing, Mark::Ring});
+    return out;
 }
 }  // namespace internal
 

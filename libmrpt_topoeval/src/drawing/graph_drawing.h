@@ -109,6 +109,8 @@ cv::Mat stackVertically(const std::vector<cv::Mat>& parts);
 // As in the paper's Fig. 7: green for the isomorphism's matches, red for neighbour growing.
 inline const cv::Scalar kIsomorphismLine(0, 190, 0);
 inline const cv::Scalar kGrowingLine(0, 0, 235);
+// Ours: the pairs of a map placed by its walls (QualityParameters::map_by_walls), teal.
+inline const cv::Scalar kWallsLine(128, 128, 0);
 inline const cv::Scalar kMissingRing(200, 0, 200);  // magenta: no graph colour uses it
 
 // Brokenness groups (drawQualityReport() and the HTML report): distinct from the match lines

@@ -44,7 +44,9 @@ std::string QualityReport::briefReport() const
     s += "coverage    " + fmt("%.3f", coverage) + "  (" + std::to_string(match.pairs.size()) +
          " of " + std::to_string(gt_vertices) +
          " ground-truth vertices matched: " + std::to_string(match.isomorphism) + " isomorphism, " +
-         std::to_string(match.neighbour_growing) + " neighbour growing)\n";
+         std::to_string(match.neighbour_growing) + " neighbour growing" +
+         (match.byWalls() ? ", " + std::to_string(match.byWalls()) + " placed by walls" : "") +
+         ")\n";
     s += "accuracy    relative " + fmt("%.3f", relative_accuracy.rmse_m) + " m rmse (score " +
          fmt("%.2f", relative_accuracy.score) + "; " + std::to_string(relative_accuracy.by_walls) +
          " of " + std::to_string(relative_accuracy.pairs) + " pairs at their walls), global " +

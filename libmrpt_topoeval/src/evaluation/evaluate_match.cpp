@@ -15,6 +15,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <sstream>
 #include <system_error>
@@ -692,6 +693,107 @@ Brokenness brokenness(const TopologyGraph& gt, const TopologyGraph& map,
     }
     return b;
 }
+
+/** The rule of a missed part's placement (wall_part_*), tolerances at least 1.5 cells. */
+internal::WallPartRule wallPartRule(const TopologyGraph& gt, const TopologyGraph& map,
+                                    const QualityParameters& p)
+{
+    internal::WallPartRule rule;
+    rule.tolerance_m = internal::wallTolerance(p.wall_part_tolerance_m, gt, map);
+    rule.link_m = p.wall_part_link_m;
+    rule.min_length_m = p.wall_part_min_length_m;
+    rule.min_share = p.wall_part_min_share;
+    rule.max_runner_up = p.wall_part_max_runner_up;
+    rule.turn_step_deg = p.wall_part_turn_step_deg;
+    rule.pair_distance_m = p.wall_part_pair_distance_m;
+    return rule;
+}
+
+/** The map placed by its walls (map_by_walls) when `given` holds no group; `out` its match
+ * (the parts' pairs, stage Walls, each pair's isomorphism its part) when parts are kept. */
+internal::WallMap mapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
+                             const GraphMatch& given, const QualityParameters& p, GraphMatch& out)
+{
+    internal::WallMapRule rule;
+    rule.part = wallPartRule(gt, map, p);
+    rule.explained_tolerance_m = internal::wallTolerance(
+        p.explained_wall_tolerance_m > 0.0 ? p.explained_wall_tolerance_m : p.wall_part_tolerance_m,
+        gt, map);
+    rule.region_m = p.map_by_walls_region_m;
+    rule.region_share = p.map_by_walls_region_share;
+    rule.min_explained = p.map_by_walls_min_explained;
+    rule.max_parts = p.map_by_walls_max_parts;
+    rule.slack_share = p.vertex_slack_share;
+    internal::Walls walls(gt, map);
+    if (!walls.ok()) return {};
+    std::vector<std::pair<int, int>> pairs;
+    for (const VertexPair& pr : given.pairs) pairs.emplace_back(pr.ground_truth, pr.map);
+    internal::WallMap placed =
+        internal::placeMapByWalls(gt, map, walls.gt(), walls.map(), pairs, rule);
+    if (placed.parts.empty()) return placed;
+    out = GraphMatch{};
+    out.messages = given.messages;
+    for (std::size_t k = 0; k < placed.parts.size(); ++k)
+        for (const auto& [g, m] : placed.parts[k].pairs)
+        {
+            // A pair of the match keeps its stage and similarity; the part is its group.
+            VertexPair pr{g, m, MatchStage::Walls, 0.0, int(k)};
+            for (const VertexPair& q : given.pairs)
+                if (q.ground_truth == g && q.map == m)
+                    pr.stage = q.stage, pr.similarity = q.similarity;
+            out.pairs.push_back(pr);
+        }
+    std::sort(out.pairs.begin(), out.pairs.end(),
+              [](const VertexPair& a, const VertexPair& b)
+              { return a.ground_truth < b.ground_truth; });
+    std::size_t matchable = 0;
+    for (const auto& v : gt.vertices) matchable += v.spurious ? 0 : 1;
+    out.missing = matchable - out.pairs.size();
+    char note[400];
+    std::snprintf(note, sizeof note,
+                  "the match held %zu pair(s), no group of %d to measure the map by: the map is "
+                  "placed by its walls in %zu part(s) explaining %.1f %% of its walls, and the "
+                  "%zu vertex pair(s) they place within %.2f m (+ %.0f %% of their clearance) are "
+                  "its match",
+                  given.pairs.size(), p.brokenness_min_vertices, placed.parts.size(),
+                  100.0 * placed.explained, out.pairs.size(), rule.part.pair_distance_m,
+                  100.0 * rule.slack_share);
+    out.messages.push_back(note);
+    return placed;
+}
+
+/** Brokenness of a map placed by its walls: one group per part (by_walls), largest first. */
+Brokenness wallMapBrokenness(const TopologyGraph& gt, const TopologyGraph& map,
+                             const internal::WallMap& placed)
+{
+    Brokenness b;
+    std::vector<Transform2D> larger;
+    for (const internal::WallPart& part : placed.parts)
+    {
+        BrokennessGroup g;
+        g.by_walls = true;
+        g.transform = part.transform;
+        double sq = 0.0;
+        std::vector<Eigen::Vector2d> at;
+        for (const auto& [a, m] : part.pairs)
+        {
+            g.gt_vertices.push_back(a);
+            g.map_vertices.push_back(m);
+            at.push_back(map.vertices[size_t(m)].position_m);
+            sq +=
+                (gt.vertices[size_t(a)].position_m - part.transform.apply(at.back())).squaredNorm();
+        }
+        g.squared_error_m2 = part.pairs.empty() ? 0.0 : sq / double(part.pairs.size());
+        g.offset_m = larger.empty()
+                         ? 0.0
+                         : internal::partOffset(g.transform, larger, at.empty() ? part.points : at);
+        larger.push_back(g.transform);
+        b.groups.push_back(std::move(g));
+    }
+    b.degree = int(b.groups.size()) - 1;
+    b.score = 1.0 / (1.0 + b.degree);
+    return b;
+}
 }  // namespace
 
 QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGraph& map,
@@ -702,10 +804,28 @@ QualityReport evaluateMatch(const TopologyGraph& ground_truth, const TopologyGra
 
 QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const TopologyGraph& map,
                                         const TopologyGraph& map_for_brokenness,
-                                        const GraphMatch& match, const QualityParameters& p,
+                                        const GraphMatch& given, const QualityParameters& p,
                                         unsigned threads)
 {
     p.validate();
+    // A match with no group to measure the map by: the map placed by its walls, whose pairs
+    // are then the match (doc/quality.md, "A map placed by its walls").
+    std::optional<internal::WallMap> by_walls;
+    GraphMatch walls_match;
+    int refused_by_walls = 0;  // parts found, too few to explain the map
+    double refused_explained = 0.0;
+    if (p.map_by_walls && given.pairs.size() < std::size_t(p.brokenness_min_vertices) &&
+        &map_for_brokenness == &map)
+    {
+        by_walls = mapByWalls(ground_truth, map, given, p, walls_match);
+        if (by_walls->parts.empty())
+        {
+            refused_by_walls = by_walls->parts_sought;
+            refused_explained = by_walls->explained;
+            by_walls.reset();
+        }
+    }
+    const GraphMatch& match = by_walls ? walls_match : given;
     if (map_for_brokenness.vertices.size() != map.vertices.size())
         throw InputError("the map's graph for brokenness is not the map's graph at another scale");
     // Before anything indexes the graphs with the match's pairs.
@@ -722,11 +842,23 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     r.messages = match.messages;
     // Brokenness needs two groups of brokenness_min_vertices: say so when the ground truth is
     // too small for that (a bare floor plan of a few rooms), so a 0 is not read as "unbroken".
-    if (r.gt_vertices < 2 * static_cast<std::size_t>(p.brokenness_min_vertices))
+    if (r.gt_vertices < 2 * static_cast<std::size_t>(p.brokenness_min_vertices) && !by_walls)
         r.messages.push_back("the ground truth's graph has " + std::to_string(r.gt_vertices) +
                              " matchable vertices, fewer than two brokenness groups of " +
                              std::to_string(p.brokenness_min_vertices) +
                              ": brokenness cannot be measured on it");
+    if (by_walls)
+        r.brokenness = wallMapBrokenness(ground_truth, map, *by_walls);
+    else if (refused_by_walls > 0)
+    {
+        char note[300];
+        std::snprintf(note, sizeof note,
+                      "the map's walls placed %d part(s) explaining %.1f %% of them, less than "
+                      "map_by_walls_min_explained (%.1f %%): the map is not placed by its walls",
+                      refused_by_walls, 100.0 * refused_explained,
+                      100.0 * p.map_by_walls_min_explained);
+        r.messages.push_back(note);
+    }
     if (match.pairs.empty())
     {
         r.local_consistency = localConsistency(ground_truth, match, {}, {}, p);
@@ -738,7 +870,7 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     // with its own wall indexes (they are not for concurrent use), while this one places the
     // pairs by their walls (an ICP each); the report is the same.
     std::future<Brokenness> broken_future;
-    if (threads > 1)
+    if (threads > 1 && !by_walls)
     {
         try
         {
@@ -840,7 +972,11 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     r.relative_accuracy.rmse_m = std::sqrt(sq / double(pg.size()));
     r.relative_accuracy.score = invScore(r.relative_accuracy.rmse_m, p.accuracy_scale_m);
 
-    if (broken_future.valid())
+    if (by_walls)
+    {
+        // Its parts are its groups (set above).
+    }
+    else if (broken_future.valid())
         r.brokenness = broken_future.get();
     else if (&map_for_brokenness == &map)
         r.brokenness = brokenness(ground_truth, map, gt_view, match, p, walls);
@@ -853,7 +989,7 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     // Brokenness step 9 (ours, wall_parts): a region of the map's walls that no group explains,
     // placed clearly by one rigid fit of its own, is a part the match missed (doc/quality.md,
     // "A part placed by its walls").
-    if (p.wall_parts && walls.ok() && !r.brokenness.groups.empty())
+    if (p.wall_parts && walls.ok() && !r.brokenness.groups.empty() && !by_walls)
     {
         const TopologyGraph& placed = map_for_brokenness;
         std::vector<Transform2D> fits;
@@ -868,14 +1004,7 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
         const ExplainedWalls before = internal::explainedWalls(
             placed, placed, fits, walls.gt(),
             internal::wallTolerance(p.explained_wall_tolerance_m, ground_truth, placed));
-        internal::WallPartRule rule;
-        rule.tolerance_m = internal::wallTolerance(p.wall_part_tolerance_m, ground_truth, placed);
-        rule.link_m = p.wall_part_link_m;
-        rule.min_length_m = p.wall_part_min_length_m;
-        rule.min_share = p.wall_part_min_share;
-        rule.max_runner_up = p.wall_part_max_runner_up;
-        rule.turn_step_deg = p.wall_part_turn_step_deg;
-        rule.pair_distance_m = p.wall_part_pair_distance_m;
+        const internal::WallPartRule rule = wallPartRule(ground_truth, placed, p);
         std::vector<Transform2D> larger = fits;
         for (internal::WallPart& part : internal::findWallParts(
                  ground_truth, placed, walls.gt(), before.unexplained_m, gt_free, map_free, rule))

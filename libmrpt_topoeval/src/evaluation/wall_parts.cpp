@@ -25,6 +25,21 @@ constexpr double kDistinctM = 0.5;
 constexpr double kPivotMargin = 1.0;
 // ICP's first matching distance [m] (at least 3 cells).
 constexpr double kIcpReach = 0.5;
+// A part's region (placeMapByWalls) is judged on at most this many of the points left.
+constexpr std::size_t kRegionSample = 3000;
+// A whole map's placement (placeMapByWalls) tries at most this many map vertices as pivots ...
+constexpr std::size_t kMapPivots = 32;
+// ... each with the ground-truth vertices whose clearance agrees within this [m] + share of
+// the larger (two cells of ragged wall, and a quarter for a vertex that slid in its room).
+constexpr double kClearanceAgreeM = 0.1;
+// ... scores the map's first placement on this many points (it only singles out a region, whose
+// own placement is scored on kScoredPoints), and refines by ICP on at most this many.
+constexpr std::size_t kFirstScoredPoints = 60;
+constexpr std::size_t kIcpPoints = 2000;
+constexpr double kClearanceAgreeShare = 0.25;
+// A map vertex's walls a part must explain for the part to place it (the validator's truth
+// asks a quarter of them too).
+constexpr double kOwnWalls = 0.25;
 
 struct Placement
 {
@@ -103,6 +118,114 @@ std::vector<std::vector<Eigen::Vector2d>> regionsOf(const std::vector<Eigen::Vec
                      [](const auto& a, const auto& b) { return a.size() > b.size(); });
     return out;
 }
+
+/** The vertices of `g` free for pivots (`free`) whose clearance + kPivotMargin reaches a point
+ * of `pts`. */
+std::vector<int> pivotsNear(const TopologyGraph& g, const std::vector<Eigen::Vector2d>& pts,
+                            const std::vector<char>& free)
+{
+    std::vector<int> out;
+    for (std::size_t m = 0; m < g.vertices.size(); ++m)
+    {
+        if (m >= free.size() || !free[m]) continue;
+        const auto& v = g.vertices[m];
+        const double reach = v.clearance_m + kPivotMargin;
+        for (const auto& q : pts)
+            if ((q - v.position_m).squaredNorm() <= reach * reach)
+            {
+                out.push_back(int(m));
+                break;
+            }
+    }
+    return out;
+}
+
+/** The two best distinct placements of `region` (`scored`: its thinned points, `centre` its
+ * centre) on the ground truth's walls, best first: every turn of turn_step_deg with each pivot
+ * pair's map vertex put on its ground-truth vertex, scored by the share of `coarse_pts` on a
+ * wall; the best kRefined distinct refined by MRPT's ICP of `region` onto `reference` and scored
+ * again on `scored`. */
+std::vector<Placement> bestPlacements(
+    const TopologyGraph& gt, const TopologyGraph& placed, const WallIndex& gt_walls,
+    const mrpt::maps::CSimplePointsMap& reference, const std::vector<Eigen::Vector2d>& region,
+    const std::vector<Eigen::Vector2d>& scored, const std::vector<Eigen::Vector2d>& coarse_pts,
+    const Eigen::Vector2d& centre, const std::vector<std::pair<int, int>>& pivot_pairs, double res,
+    const WallPartRule& rule)
+{
+    // Coarse: every turn, every pivot pair (map vertex, ground-truth vertex).
+    std::vector<Placement> coarse;
+    const int turns = std::max(1, int(std::lround(360.0 / rule.turn_step_deg)));
+    for (int k = 0; k < turns; ++k)
+    {
+        const double yaw = k * 360.0 / turns;
+        const Transform2D turn{0.0, 0.0, yaw};
+        for (const auto& [m, g] : pivot_pairs)
+        {
+            const Eigen::Vector2d d = gt.vertices[size_t(g)].position_m -
+                                      turn.apply(placed.vertices[size_t(m)].position_m);
+            const Transform2D t{d.x(), d.y(), yaw};
+            coarse.push_back({shareOn(gt_walls, coarse_pts, t, rule.tolerance_m), t});
+        }
+    }
+    std::stable_sort(coarse.begin(), coarse.end(),
+                     [](const Placement& a, const Placement& b) { return a.share > b.share; });
+    // Refined by ICP of the region's points onto the ground truth's walls.
+    mrpt::maps::CSimplePointsMap cloud;
+    for (const auto& q : region) cloud.insertPoint(float(q.x()), float(q.y()), 0.0f);
+    std::vector<Placement> refined;
+    for (const Placement& c : distinct(coarse, kRefined, centre))
+    {
+        const Transform2D t = icpOfWalls(reference, cloud, c.t, res, kIcpReach);
+        refined.push_back({shareOn(gt_walls, scored, t, rule.tolerance_m), t});
+    }
+    std::stable_sort(refined.begin(), refined.end(),
+                     [](const Placement& a, const Placement& b) { return a.share > b.share; });
+    return distinct(refined, 2, centre);
+}
+
+Eigen::Vector2d centreOf(const std::vector<Eigen::Vector2d>& pts)
+{
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (const auto& q : pts) c += q;
+    return pts.empty() ? c : Eigen::Vector2d(c / double(pts.size()));
+}
+
+/** The points of `pts` that `t` puts on a ground-truth wall and whose neighbourhood (radius
+ * `radius`, counted on at most kRegionSample evenly thinned points) it puts there for at least
+ * `share` of it: a part's own walls, not a straight wall that happens to lie along another. */
+std::vector<Eigen::Vector2d> regionOf(const WallIndex& gt_walls,
+                                      const std::vector<Eigen::Vector2d>& pts, const Transform2D& t,
+                                      double tolerance, double radius, double share)
+{
+    const std::vector<Eigen::Vector2d> sample = evenlyThinned(pts, kRegionSample);
+    std::map<std::pair<long, long>, std::vector<std::size_t>> cells;
+    auto cellOf = [&](const Eigen::Vector2d& p)
+    { return std::make_pair(long(std::floor(p.x() / radius)), long(std::floor(p.y() / radius))); };
+    std::vector<char> on(sample.size());
+    for (std::size_t i = 0; i < sample.size(); ++i)
+    {
+        on[i] = gt_walls.near(t.apply(sample[i]), tolerance) ? 1 : 0;
+        cells[cellOf(sample[i])].push_back(i);
+    }
+    std::vector<Eigen::Vector2d> out;
+    const double r2 = radius * radius;
+    for (const auto& q : pts)
+    {
+        if (!gt_walls.near(t.apply(q), tolerance)) continue;
+        std::size_t near = 0, placed = 0;
+        const auto [cx, cy] = cellOf(q);
+        for (long dx = -1; dx <= 1; ++dx)
+            for (long dy = -1; dy <= 1; ++dy)
+            {
+                const auto it = cells.find({cx + dx, cy + dy});
+                if (it == cells.end()) continue;
+                for (std::size_t j : it->second)
+                    if ((sample[j] - q).squaredNorm() <= r2) ++near, placed += on[j];
+            }
+        if (near > 0 && double(placed) >= share * double(near)) out.push_back(q);
+    }
+    return out;
+}
 }  // namespace
 
 std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph& placed,
@@ -137,9 +260,7 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
     {
         if (double(region.size()) * cell < rule.min_length_m) break;
         const std::vector<Eigen::Vector2d> scored = evenlyThinned(region, kScoredPoints);
-        Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-        for (const auto& q : region) centre += q;
-        centre /= double(region.size());
+        const Eigen::Vector2d centre = centreOf(region);
         // A region an accepted part already places is that part's.
         bool placed_already = false;
         for (const WallPart& p : parts)
@@ -147,52 +268,13 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
                 placed_already = true;
         if (placed_already) continue;
         // Its pivots: free map vertices whose clearance (+ a margin) reaches the region.
-        std::vector<int> map_pivots;
-        for (std::size_t m = 0; m < placed.vertices.size(); ++m)
-        {
-            if (m >= map_free.size() || !map_free[m]) continue;
-            const auto& v = placed.vertices[m];
-            const double reach = v.clearance_m + kPivotMargin;
-            for (const auto& q : scored)
-                if ((q - v.position_m).squaredNorm() <= reach * reach)
-                {
-                    map_pivots.push_back(int(m));
-                    break;
-                }
-        }
+        const std::vector<int> map_pivots = pivotsNear(placed, scored, map_free);
         if (map_pivots.empty()) continue;
-        // Coarse: every turn, every pivot pair.
-        std::vector<Placement> coarse;
-        const int turns = std::max(1, int(std::lround(360.0 / rule.turn_step_deg)));
-        for (int k = 0; k < turns; ++k)
-        {
-            const double yaw = k * 360.0 / turns;
-            const Transform2D turn{0.0, 0.0, yaw};
-            for (int m : map_pivots)
-            {
-                const Eigen::Vector2d mq = turn.apply(placed.vertices[size_t(m)].position_m);
-                for (int g : gt_pivots)
-                {
-                    const Eigen::Vector2d d = gt.vertices[size_t(g)].position_m - mq;
-                    const Transform2D t{d.x(), d.y(), yaw};
-                    coarse.push_back({shareOn(gt_walls, scored, t, rule.tolerance_m), t});
-                }
-            }
-        }
-        std::stable_sort(coarse.begin(), coarse.end(),
-                         [](const Placement& a, const Placement& b) { return a.share > b.share; });
-        // Refined by ICP of the region's points onto the ground truth's walls.
-        mrpt::maps::CSimplePointsMap cloud;
-        for (const auto& q : region) cloud.insertPoint(float(q.x()), float(q.y()), 0.0f);
-        std::vector<Placement> refined;
-        for (const Placement& c : distinct(coarse, kRefined, centre))
-        {
-            const Transform2D t = icpOfWalls(reference, cloud, c.t, res, kIcpReach);
-            refined.push_back({shareOn(gt_walls, scored, t, rule.tolerance_m), t});
-        }
-        std::stable_sort(refined.begin(), refined.end(),
-                         [](const Placement& a, const Placement& b) { return a.share > b.share; });
-        const std::vector<Placement> best = distinct(refined, 2, centre);
+        std::vector<std::pair<int, int>> pairs;
+        for (int m : map_pivots)
+            for (int g : gt_pivots) pairs.emplace_back(m, g);
+        const std::vector<Placement> best = bestPlacements(
+            gt, placed, gt_walls, reference, region, scored, scored, centre, pairs, res, rule);
         if (best.empty()) continue;
         const double runner = best.size() > 1 ? best[1].share : 0.0;
         if (best[0].share < rule.min_share || runner > rule.max_runner_up * best[0].share) continue;
@@ -226,5 +308,156 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
         parts.push_back(std::move(part));
     }
     return parts;
+}
+
+WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
+                        const WallIndex& gt_walls, const WallIndex& map_walls,
+                        const std::vector<std::pair<int, int>>& given, const WallMapRule& rule)
+{
+    WallMap out;
+    if (gt_walls.empty() || map.wall_points_m.empty()) return out;
+    const WallPartRule& pr = rule.part;
+    const double cell = std::max(map.map.resolution_m, 1e-6);
+    std::vector<Eigen::Vector2d> rest;
+    for (const auto& w : map.wall_points_m) rest.push_back(w.cast<double>());
+    const std::size_t all = rest.size();
+    std::vector<char> gt_free(gt.vertices.size()), map_free(map.vertices.size());
+    for (const auto& v : gt.vertices) gt_free[size_t(v.id)] = !v.spurious;
+    for (const auto& v : map.vertices) map_free[size_t(v.id)] = !v.spurious;
+    std::vector<int> gt_pivots;
+    for (std::size_t g = 0; g < gt.vertices.size(); ++g)
+        if (gt_free[g]) gt_pivots.push_back(int(g));
+    if (gt_pivots.empty()) return out;
+    mrpt::maps::CSimplePointsMap reference;
+    for (const auto& w : gt.wall_points_m) reference.insertPoint(w.x(), w.y(), 0.0f);
+    const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
+    auto lengthOf = [&](const std::vector<Eigen::Vector2d>& pts)
+    { return double(pts.size()) * cell; };
+    // The whole map's pivots are many: at most kMapPivots map vertices (evenly by id), each
+    // with the ground-truth vertices of a like clearance (a rigid motion keeps it; a vertex
+    // sliding along its room's medial axis changes it little).
+    auto pivotPairs = [&](std::vector<int> near)
+    {
+        if (near.size() > kMapPivots)
+        {
+            std::vector<int> thin;
+            for (std::size_t k = 0; k < kMapPivots; ++k)
+                thin.push_back(near[k * near.size() / kMapPivots]);
+            near = std::move(thin);
+        }
+        std::vector<std::pair<int, int>> pairs;
+        for (int m : near)
+        {
+            const double c = map.vertices[size_t(m)].clearance_m;
+            for (int g : gt_pivots)
+            {
+                const double cg = gt.vertices[size_t(g)].clearance_m;
+                if (std::abs(c - cg) <= kClearanceAgreeM + kClearanceAgreeShare * std::max(c, cg))
+                    pairs.emplace_back(m, g);
+            }
+        }
+        return pairs;
+    };
+
+    std::vector<WallPart> parts;
+    while (int(parts.size()) < rule.max_parts && lengthOf(rest) >= pr.min_length_m)
+    {
+        // The best placement of what is left (it only singles out a region: the coarse search on
+        // fewer points) ...
+        std::vector<Eigen::Vector2d> scored = evenlyThinned(rest, kScoredPoints);
+        std::vector<std::pair<int, int>> pivots = pivotPairs(pivotsNear(map, scored, map_free));
+        if (pivots.empty()) break;
+        const std::vector<Placement> first = bestPlacements(
+            gt, map, gt_walls, reference, evenlyThinned(rest, kIcpPoints), scored,
+            evenlyThinned(rest, kFirstScoredPoints), centreOf(rest), pivots, res, pr);
+        if (first.empty()) break;
+        // ... singles out a region, which must be a part's size and clearly placed on its own.
+        const Transform2D& t = first[0].t;
+        const std::vector<Eigen::Vector2d> region =
+            regionOf(gt_walls, rest, t, pr.tolerance_m, rule.region_m, rule.region_share);
+        if (lengthOf(region) < pr.min_length_m) break;
+        scored = evenlyThinned(region, kScoredPoints);
+        const Eigen::Vector2d centre = centreOf(region);
+        pivots = pivotPairs(pivotsNear(map, scored, map_free));
+        std::vector<Placement> found =
+            bestPlacements(gt, map, gt_walls, reference, evenlyThinned(region, kIcpPoints), scored,
+                           scored, centre, pivots, res, pr);
+        // The placement that singled it out is one of its candidates.
+        found.push_back({shareOn(gt_walls, scored, t, pr.tolerance_m), t});
+        std::stable_sort(found.begin(), found.end(),
+                         [](const Placement& a, const Placement& b) { return a.share > b.share; });
+        const std::vector<Placement> best = distinct(found, 2, centre);
+        const double runner = best.size() > 1 ? best[1].share : 0.0;
+        if (best[0].share < pr.min_share || runner > pr.max_runner_up * best[0].share) break;
+        WallPart part;
+        part.transform = best[0].t;
+        part.share = best[0].share;
+        part.runner_up = runner;
+        part.points = scored;
+        parts.push_back(std::move(part));
+        // Its walls leave: the next part is sought on the rest.
+        std::vector<Eigen::Vector2d> left;
+        for (const auto& q : rest)
+            if (!gt_walls.near(parts.back().transform.apply(q), rule.explained_tolerance_m))
+                left.push_back(q);
+        if (left.size() == rest.size()) break;
+        rest = std::move(left);
+    }
+    out.parts_sought = int(parts.size());
+    out.explained = all ? 1.0 - double(rest.size()) / double(all) : 0.0;
+    if (parts.empty() || out.explained < rule.min_explained) return out;
+
+    // A map vertex is placed by each part that explains at least kOwnWalls of the walls around
+    // it (its clearance + 2 cells: its Voronoi sites; a vertex at a break has both parts'),
+    // and paired with the ground-truth vertex one of them puts it nearest, within
+    // pair_distance_m + slack_share of the larger clearance, or (a pair of the match, `given`)
+    // within the ground-truth vertex's clearance (a vertex slides in its room); the match's first,
+    // then nearest first, each vertex once.
+    struct Candidate
+    {
+        double d;
+        int g, m, part;
+    };
+    std::vector<Candidate> candidates;
+    std::vector<int> given_of(gt.vertices.size(), -1);
+    for (const auto& [g, m] : given)
+        if (g >= 0 && std::size_t(g) < given_of.size()) given_of[size_t(g)] = m;
+    for (const auto& v : map.vertices)
+    {
+        if (v.spurious) continue;
+        const auto& around = map_walls.around(v.position_m, v.clearance_m + 2.0 * cell);
+        for (std::size_t k = 0; k < parts.size(); ++k)
+        {
+            std::size_t n = 0;
+            for (const auto& q : around)
+                n += gt_walls.near(parts[k].transform.apply(q), rule.explained_tolerance_m) ? 1 : 0;
+            if (n == 0 || double(n) < kOwnWalls * double(around.size())) continue;
+            const Eigen::Vector2d at = parts[k].transform.apply(v.position_m);
+            for (int g : gt_pivots)
+            {
+                const auto& w = gt.vertices[size_t(g)];
+                const double d = (w.position_m - at).norm();
+                const bool given_pair = given_of[size_t(g)] == v.id && d <= w.clearance_m;
+                // A vertex slides in its room (vertex_slack_share of its clearance).
+                const double reach =
+                    pr.pair_distance_m + rule.slack_share * std::max(w.clearance_m, v.clearance_m);
+                if (d > reach && !given_pair) continue;
+                // The match's pairs first.
+                candidates.push_back({given_pair ? -1.0 : d, g, v.id, int(k)});
+            }
+        }
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.d < b.d; });
+    std::vector<char> gt_left = gt_free, map_left = map_free;
+    for (const Candidate& c : candidates)
+    {
+        if (!gt_left[size_t(c.g)] || !map_left[size_t(c.m)]) continue;
+        gt_left[size_t(c.g)] = map_left[size_t(c.m)] = 0;
+        parts[size_t(c.part)].pairs.emplace_back(c.g, c.m);
+    }
+    for (WallPart& p : parts) std::sort(p.pairs.begin(), p.pairs.end());
+    out.parts = std::move(parts);
+    return out;
 }
 }  // namespace mrpt_topoeval::internal

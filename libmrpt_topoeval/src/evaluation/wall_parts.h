@@ -46,6 +46,42 @@ struct WallPart
  * whose next distinct one (5 degrees or 0.5 m away at the region's centre) at most
  * `max_runner_up` of that, is a part. Largest region first; a region an accepted part already
  * places is not placed again. Deterministic. */
+/** The rule for a map the match grouped nothing of (QualityParameters map_by_walls_*). */
+struct WallMapRule
+{
+    WallPartRule part;                   //!< each part's placement, as a missed part's
+    double explained_tolerance_m = 0.3;  //!< a point a part's fit explains (and takes away)
+    double region_m = 3.0;               //!< a part's region: its points' neighbourhood ...
+    double region_share = 0.9;           //!< ... on a ground-truth wall at least this share
+    double min_explained = 0.9;          //!< the parts together explain this share of walls
+    int max_parts = 4;                   //!< parts sought at most
+    double slack_share = 0.1;            //!< a pair's reach: + this share of its clearance
+};
+
+/** A map placed part by part by its walls. */
+struct WallMap
+{
+    std::vector<WallPart> parts;  //!< largest first; empty when refused
+    double explained = 0.0;       //!< share of the map's wall points the parts sought explain
+    int parts_sought = 0;         //!< parts found before the search stopped (refused or not)
+};
+
+/** A map the match grouped nothing of, placed part by part on the ground truth's walls:
+ * the placement (as findWallParts()'s, from every non-spurious vertex pair) of the wall points
+ * no part explains yet, its region being the points whose neighbourhood of `region_m` it puts
+ * on a ground-truth wall for at least `region_share` of them (coincident straight walls of
+ * another building leave none); a region of min_length_m whose placement is clear on it (as a
+ * missed part's) is the next part, and takes away the points within `explained_tolerance_m`.
+ * The parts are kept when together they explain at least `min_explained` of the map's walls;
+ * each map vertex then pairs, under a part that explains at least a quarter of the walls
+ * around it, with the ground-truth vertex it is put nearest within pair_distance_m +
+ * slack_share of the larger clearance (a vertex slides in its room); a pair of
+ * the match (`given`: ground truth, map) is kept first when such a part puts it within the
+ * ground-truth vertex's clearance. Each vertex once. Deterministic. */
+WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
+                        const WallIndex& gt_walls, const WallIndex& map_walls,
+                        const std::vector<std::pair<int, int>>& given, const WallMapRule& rule);
+
 std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph& placed,
                                     const WallIndex& gt_walls,
                                     const std::vector<Eigen::Vector2f>& unexplained,

@@ -297,7 +297,11 @@ QualityReport scoreGraphs(const TopologyGraph& gt, const mrpt::maps::COccupancyG
     const double t_scale = msSince(ts);
     const auto t3 = Clock::now();
     const unsigned threads = internal::workerThreads(params.similarity.threads);
-    QualityReport r = evaluateMatch(gt, map, m.match, params.quality, threads);
+    // A reading the scale search found replaces the map as given, which matched nothing: that
+    // one is not placed by its walls (map_by_walls), work for nothing.
+    QualityParameters as_given = params.quality;
+    if (scaled && scaled->searched > 0.0) as_given.map_by_walls = false;
+    QualityReport r = evaluateMatch(gt, map, m.match, as_given, threads);
     std::string scale_text;
     if (scaled)
     {

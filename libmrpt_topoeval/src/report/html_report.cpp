@@ -264,7 +264,8 @@ void writeReport(JsonWriter& w, const TopologyGraph& gt, const TopologyGraph& ma
     w.key("isomorphism").value(static_cast<std::uint64_t>(m.isomorphism));
     w.key("neighbour_growing").value(static_cast<std::uint64_t>(m.neighbour_growing));
     w.key("missing").value(static_cast<std::uint64_t>(m.missing));
-    // [gt, map, stage (0 isomorphism, 1 neighbour growing), similarity, isomorphism, group,
+    // [gt, map, stage (0 isomorphism, 1 neighbour growing, 2 placed by walls), similarity,
+    //  isomorphism (a map placed by its walls: its part), group,
     //  error after the relative alignment [m], error after its group's alignment [m]]
     w.key("pairs").beginArray();
     for (const VertexPair& p : m.pairs)
@@ -276,7 +277,7 @@ void writeReport(JsonWriter& w, const TopologyGraph& gt, const TopologyGraph& ma
         const int g = group[static_cast<std::size_t>(p.ground_truth)];
         w.beginArray(true);
         w.value(p.ground_truth).value(p.map);
-        w.value(p.stage == MatchStage::Isomorphism ? 0 : 1);
+        w.value(p.stage == MatchStage::Isomorphism ? 0 : p.stage == MatchStage::Walls ? 2 : 1);
         w.value(p.similarity, 3).value(p.isomorphism).value(g);
         w.value(
             r.relative_accuracy.pairs ? (a - r.relative_accuracy.transform.apply(b)).norm() : NAN,
@@ -349,6 +350,7 @@ std::string thumbnail(const Grid& gt_grid, const TopologyGraph& gt, const Grid& 
         cv::line(canvas, at(0, gt.vertices[static_cast<std::size_t>(p.ground_truth)].position_m),
                  at(1, map.vertices[static_cast<std::size_t>(p.map)].position_m),
                  p.stage == MatchStage::Isomorphism ? internal::kIsomorphismLine
+                 : p.stage == MatchStage::Walls     ? internal::kWallsLine
                                                     : internal::kGrowingLine,
                  1, cv::LINE_AA, 4);
     for (const VertexPair& p : r.match.pairs)
@@ -546,6 +548,7 @@ std::string renderHtmlReport(const HtmlReportContent& c)
           std::make_pair("unmatched", &internal::kUnmatchedColour),
           std::make_pair("isomorphism", &internal::kIsomorphismLine),
           std::make_pair("growing", &internal::kGrowingLine),
+          std::make_pair("walls", &internal::kWallsLine),
           std::make_pair("missing", &internal::kMissingRing),
           std::make_pair("unexplained", &internal::kUnexplainedWallColour),
           std::make_pair("edge", &internal::kEdgeColour),

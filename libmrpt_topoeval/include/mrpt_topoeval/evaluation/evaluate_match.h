@@ -181,6 +181,24 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     /** ... the part's pairs: free ground-truth vertices it puts this near a free map vertex,
      * for the report and the validator's truth; they do not join the match [m]. */
     double wall_part_pair_distance_m = 0.5;
+    /** Ours (doc/quality.md, "A map placed by its walls"): when the match holds fewer pairs
+     * than brokenness_min_vertices (no group to measure a map by: a flat's graph of 4-6
+     * vertices broken once has none), the map is placed part by part by its walls (each part
+     * as a missed part is, wall_part_*), and the vertices those parts place near ground-truth
+     * vertices are its match. On the standard corpus 4 small maps broken once exactly right
+     * and no other building placed (doc/validation.md, "Session 44"). false = the paper [bool]. */
+    bool map_by_walls = true;
+    /** ... a part's region: the points whose neighbourhood of this radius its fit puts on the
+     * ground truth's walls (a straight wall of another building lying along one of the ground
+     * truth's has a neighbourhood that does not follow) [m]. */
+    double map_by_walls_region_m = 3.0;
+    /** ... for at least this share of that neighbourhood's points [ratio]. */
+    double map_by_walls_region_share = 0.9;
+    /** ... the parts found must together explain this share of the map's walls (within
+     * explained_wall_tolerance_m), else none is kept [ratio]. */
+    double map_by_walls_min_explained = 0.9;
+    /** ... parts sought at most (a map broken three times has four) [1]. */
+    int map_by_walls_max_parts = 4;
     /** Accuracy, consistency and brokenness describe the matched part only: below this
      * coverage, or share of the map's walls explained, the quality is multiplied by
      * sqrt(the smaller / this). 0 = the paper's plain weighted mean [ratio]. */

@@ -7,7 +7,9 @@
   const app = document.getElementById('app');
   const SVGNS = 'http://www.w3.org/2000/svg';
   const C = data.colours;
-  const STAGES = ['isomorphism', 'neighbour growing'];
+  const STAGES = ['isomorphism', 'neighbour growing', 'placed by walls'];
+  // Pairs of a map placed by its walls (stage 2).
+  const byWalls = m => m.pairs.filter(p => p[2] === 2).length;
 
   // ---- small helpers
 
@@ -95,7 +97,8 @@
     const boxes = el('div', {class: 'scores'},
       scoreBox('coverage', num(entry.coverage, 3),
                matched + ' of ' + entry.gt_vertices + ' ground-truth vertices matched (' +
-               m.isomorphism + ' isomorphism, ' + m.neighbour_growing + ' neighbour growing)'),
+               m.isomorphism + ' isomorphism, ' + m.neighbour_growing + ' neighbour growing' +
+               (byWalls(m) ? ', ' + byWalls(m) + ' placed by walls' : '') + ')'),
       ew && ew.measured ?
         scoreBox('explained walls', num(ew.share, 3),
                  ew.explained + ' of ' + ew.wall_points + ' map wall points within ' +
@@ -241,16 +244,16 @@
     const mapV = new Map(map.vertices_unpacked.map(v => [v.id, v]));
     const lines = sv('g', {class: 'match-lines'});
     const lineOf = new Map();
-    for (const stage of [0, 1]) for (const p of pairs) {
+    for (const stage of [0, 1, 2]) for (const p of pairs) {
       if (p.stage !== stage) continue;
       const a = gtV.get(p.gt), b = mapV.get(p.map);
       if (!a || !b) continue;
       const l = sv('line', {class: 'match-line', x1: a.x * sg, y1: a.y * sg, x2: ox + b.x * sm,
-        y2: b.y * sm, stroke: stage === 0 ? C.isomorphism : C.growing, 'stroke-width': 2,
+        y2: b.y * sm, stroke: [C.isomorphism, C.growing, C.walls][stage], 'stroke-width': 2,
         'stroke-opacity': 0.85, 'vector-effect': 'non-scaling-stroke', 'data-gt': p.gt,
         'data-map': p.map});
       const info = () => ['match: ground-truth vertex ' + p.gt + ' \u2194 map vertex ' + p.map,
-        STAGES[p.stage] + (p.iso >= 0 ? ' (isomorphism ' + p.iso + ')' : ''),
+        STAGES[p.stage] + (p.iso >= 0 ? (p.stage === 2 ? ' (part ' : ' (isomorphism ') + p.iso + ')' : ''),
         'similarity ' + num(p.similarity, 3),
         p.group >= 0 ? 'brokenness group ' + p.group + ', error ' + num(p.err_group, 3) + ' m'
                      : 'in no brokenness group',
@@ -347,6 +350,8 @@
          'isomorphism: ' + entry.match.isomorphism),
       el('span', {}, el('span', {class: 'bar', style: 'background:' + C.growing}),
          'neighbour growing: ' + entry.match.neighbour_growing),
+      ...(byWalls(entry.match) ? [el('span', {}, el('span', {class: 'bar', style: 'background:' +
+                                    C.walls}), 'placed by walls: ' + byWalls(entry.match))] : []),
       el('span', {}, el('span', {class: 'swatch', style: 'background:none;border-color:' +
                                  C.missing}), 'missing: ' + entry.match.missing),
       ...entry.brokenness.groups.map((g, i) => el('span', {},
