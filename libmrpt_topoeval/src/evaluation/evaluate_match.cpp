@@ -709,10 +709,12 @@ internal::WallPartRule wallPartRule(const TopologyGraph& gt, const TopologyGraph
     return rule;
 }
 
-/** The map placed by its walls (map_by_walls) when `given` holds no group; `out` its match
+/** The map placed by its walls (map_by_walls) when `given` holds no group (`walls`: both
+ * graphs' wall points, shared with the steps after it); `out` its match
  * (the parts' pairs, stage Walls, each pair's isomorphism its part) when parts are kept. */
 internal::WallMap mapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
-                             const GraphMatch& given, const QualityParameters& p, GraphMatch& out)
+                             const GraphMatch& given, const QualityParameters& p,
+                             internal::Walls& walls, GraphMatch& out)
 {
     internal::WallMapRule rule;
     rule.part = wallPartRule(gt, map, p);
@@ -724,7 +726,6 @@ internal::WallMap mapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     rule.min_explained = p.map_by_walls_min_explained;
     rule.max_parts = p.map_by_walls_max_parts;
     rule.slack_share = p.vertex_slack_share;
-    internal::Walls walls(gt, map);
     if (!walls.ok()) return {};
     std::vector<std::pair<int, int>> pairs;
     for (const VertexPair& pr : given.pairs) pairs.emplace_back(pr.ground_truth, pr.map);
@@ -808,6 +809,9 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
                                         unsigned threads)
 {
     p.validate();
+    // Both graphs' wall points, indexed on first use, for the steps on this thread that align
+    // walls (the brokenness thread has its own: they are not for concurrent use).
+    internal::Walls walls(ground_truth, map);
     // A match with no group to measure the map by: the map placed by its walls, whose pairs
     // are then the match (doc/quality.md, "A map placed by its walls").
     std::optional<internal::WallMap> by_walls;
@@ -817,7 +821,7 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     if (p.map_by_walls && given.pairs.size() < std::size_t(p.brokenness_min_vertices) &&
         &map_for_brokenness == &map)
     {
-        by_walls = mapByWalls(ground_truth, map, given, p, walls_match);
+        by_walls = mapByWalls(ground_truth, map, given, p, walls, walls_match);
         if (by_walls->parts.empty())
         {
             refused_by_walls = by_walls->parts_sought;
@@ -957,7 +961,6 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     // agree, the point they put on its ground-truth vertex (pair_wall_margin_m). The alignment
     // is refitted to the places, without the pairs beyond the outlier distance.
     std::vector<Eigen::Vector2d> places = pm;
-    internal::Walls walls(ground_truth, map);
     internal::placeByWalls(ground_truth, map, match, t, p, walls, places, slack,
                            r.relative_accuracy.by_walls);
     if (r.relative_accuracy.by_walls > 0)
@@ -972,18 +975,17 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     r.relative_accuracy.rmse_m = std::sqrt(sq / double(pg.size()));
     r.relative_accuracy.score = invScore(r.relative_accuracy.rmse_m, p.accuracy_scale_m);
 
-    if (by_walls)
+    if (!by_walls)  // a map placed by its walls has its parts as its groups (above)
     {
-        // Its parts are its groups (set above).
-    }
-    else if (broken_future.valid())
-        r.brokenness = broken_future.get();
-    else if (&map_for_brokenness == &map)
-        r.brokenness = brokenness(ground_truth, map, gt_view, match, p, walls);
-    else
-    {
-        internal::Walls own(ground_truth, map_for_brokenness);
-        r.brokenness = brokenness(ground_truth, map_for_brokenness, gt_view, match, p, own);
+        if (broken_future.valid())
+            r.brokenness = broken_future.get();
+        else if (&map_for_brokenness == &map)
+            r.brokenness = brokenness(ground_truth, map, gt_view, match, p, walls);
+        else
+        {
+            internal::Walls own(ground_truth, map_for_brokenness);
+            r.brokenness = brokenness(ground_truth, map_for_brokenness, gt_view, match, p, own);
+        }
     }
 
     // Brokenness step 9 (ours, wall_parts): a region of the map's walls that no group explains,

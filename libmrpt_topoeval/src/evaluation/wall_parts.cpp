@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 
 #include "common/union_find.h"
 
@@ -183,6 +184,25 @@ std::vector<Placement> bestPlacements(
     return distinct(refined, 2, centre);
 }
 
+/** The part the best of `best` (the two best distinct placements, best first) is, when it puts
+ * at least min_share of the region on a wall and the runner-up at most max_runner_up of that:
+ * the walls single it out. `scored` its region's points. */
+std::optional<WallPart> clearPart(const std::vector<Placement>& best,
+                                  const std::vector<Eigen::Vector2d>& scored,
+                                  const WallPartRule& rule)
+{
+    if (best.empty()) return std::nullopt;
+    const double runner = best.size() > 1 ? best[1].share : 0.0;
+    if (best[0].share < rule.min_share || runner > rule.max_runner_up * best[0].share)
+        return std::nullopt;
+    WallPart part;
+    part.transform = best[0].t;
+    part.share = best[0].share;
+    part.runner_up = runner;
+    part.points = scored;
+    return part;
+}
+
 Eigen::Vector2d centreOf(const std::vector<Eigen::Vector2d>& pts)
 {
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
@@ -275,14 +295,9 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
             for (int g : gt_pivots) pairs.emplace_back(m, g);
         const std::vector<Placement> best = bestPlacements(
             gt, placed, gt_walls, reference, region, scored, scored, centre, pairs, res, rule);
-        if (best.empty()) continue;
-        const double runner = best.size() > 1 ? best[1].share : 0.0;
-        if (best[0].share < rule.min_share || runner > rule.max_runner_up * best[0].share) continue;
-        WallPart part;
-        part.transform = best[0].t;
-        part.share = best[0].share;
-        part.runner_up = runner;
-        part.points = scored;
+        std::optional<WallPart> clear = clearPart(best, scored, rule);
+        if (!clear) continue;
+        WallPart& part = *clear;
         // Its pairs: each free ground-truth vertex the fit puts within pair_distance_m of a free
         // map vertex (the nearest; each vertex in one part's pairs only, ground-truth vertices
         // in id order).
@@ -386,15 +401,9 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
         found.push_back({shareOn(gt_walls, scored, t, pr.tolerance_m), t});
         std::stable_sort(found.begin(), found.end(),
                          [](const Placement& a, const Placement& b) { return a.share > b.share; });
-        const std::vector<Placement> best = distinct(found, 2, centre);
-        const double runner = best.size() > 1 ? best[1].share : 0.0;
-        if (best[0].share < pr.min_share || runner > pr.max_runner_up * best[0].share) break;
-        WallPart part;
-        part.transform = best[0].t;
-        part.share = best[0].share;
-        part.runner_up = runner;
-        part.points = scored;
-        parts.push_back(std::move(part));
+        std::optional<WallPart> part = clearPart(distinct(found, 2, centre), scored, pr);
+        if (!part) break;
+        parts.push_back(std::move(*part));
         // Its walls leave: the next part is sought on the rest.
         std::vector<Eigen::Vector2d> left;
         for (const auto& q : rest)
