@@ -33,11 +33,11 @@ constexpr std::size_t kMapPivots = 32;
 // ... each with the ground-truth vertices whose clearance agrees within this [m] + share of
 // the larger (two cells of ragged wall, and a quarter for a vertex that slid in its room).
 constexpr double kClearanceAgreeM = 0.1;
+constexpr double kClearanceAgreeShare = 0.25;
 // ... scores the map's first placement on this many points (it only singles out a region, whose
 // own placement is scored on kScoredPoints), and refines by ICP on at most this many.
 constexpr std::size_t kFirstScoredPoints = 60;
 constexpr std::size_t kIcpPoints = 2000;
-constexpr double kClearanceAgreeShare = 0.25;
 // A map vertex's walls a part must explain for the part to place it (the validator's truth
 // asks a quarter of them too).
 constexpr double kOwnWalls = 0.25;
@@ -81,6 +81,40 @@ std::vector<Placement> distinct(const std::vector<Placement>& sorted, std::size_
     return out;
 }
 
+/** `pts` in square cells `radius` wide, for the points within `radius` of a place: they lie in
+ * its cell or the 8 around it. */
+class Neighbours
+{
+public:
+    Neighbours(const std::vector<Eigen::Vector2d>& pts, double radius) : m_pts(pts), m_r(radius)
+    {
+        for (std::size_t i = 0; i < pts.size(); ++i) m_cells[cellOf(pts[i])].push_back(i);
+    }
+    /** `f(j)` for each point j within the radius of `q` (in no particular order). */
+    template <class F>
+    void within(const Eigen::Vector2d& q, F f) const
+    {
+        const auto [cx, cy] = cellOf(q);
+        for (long dx = -1; dx <= 1; ++dx)
+            for (long dy = -1; dy <= 1; ++dy)
+            {
+                const auto it = m_cells.find({cx + dx, cy + dy});
+                if (it == m_cells.end()) continue;
+                for (std::size_t j : it->second)
+                    if ((m_pts[j] - q).squaredNorm() <= m_r * m_r) f(j);
+            }
+    }
+
+private:
+    std::pair<long, long> cellOf(const Eigen::Vector2d& p) const
+    {
+        return {long(std::floor(p.x() / m_r)), long(std::floor(p.y() / m_r))};
+    }
+    const std::vector<Eigen::Vector2d>& m_pts;
+    double m_r;
+    std::map<std::pair<long, long>, std::vector<std::size_t>> m_cells;
+};
+
 /** Regions: wall points within `link` of each other, by union-find over square cells `link`
  * wide (a point's neighbours lie in its cell or the 8 around it). Largest first; ties by the
  * first point. */
@@ -88,24 +122,13 @@ std::vector<std::vector<Eigen::Vector2d>> regionsOf(const std::vector<Eigen::Vec
                                                     double link)
 {
     UnionFind sets(pts.size());
-    std::map<std::pair<long, long>, std::vector<std::size_t>> cells;
-    auto cellOf = [&](const Eigen::Vector2d& p)
-    { return std::make_pair(long(std::floor(p.x() / link)), long(std::floor(p.y() / link))); };
-    for (std::size_t i = 0; i < pts.size(); ++i) cells[cellOf(pts[i])].push_back(i);
-    const double link2 = link * link;
+    const Neighbours near(pts, link);
     for (std::size_t i = 0; i < pts.size(); ++i)
-    {
-        const auto [cx, cy] = cellOf(pts[i]);
-        for (long dx = -1; dx <= 1; ++dx)
-            for (long dy = -1; dy <= 1; ++dy)
-            {
-                const auto it = cells.find({cx + dx, cy + dy});
-                if (it == cells.end()) continue;
-                for (std::size_t j : it->second)
-                    if (j > i && (pts[i] - pts[j]).squaredNorm() <= link2)
-                        sets.unite(int(i), int(j));
-            }
-    }
+        near.within(pts[i],
+                    [&](std::size_t j)
+                    {
+                        if (j > i) sets.unite(int(i), int(j));
+                    });
     // Regions numbered by their first point, then ordered by size (largest first).
     std::map<std::size_t, std::size_t> label_of_root;
     std::vector<std::vector<Eigen::Vector2d>> out;
@@ -218,30 +241,16 @@ std::vector<Eigen::Vector2d> regionOf(const WallIndex& gt_walls,
                                       double tolerance, double radius, double share)
 {
     const std::vector<Eigen::Vector2d> sample = evenlyThinned(pts, kRegionSample);
-    std::map<std::pair<long, long>, std::vector<std::size_t>> cells;
-    auto cellOf = [&](const Eigen::Vector2d& p)
-    { return std::make_pair(long(std::floor(p.x() / radius)), long(std::floor(p.y() / radius))); };
     std::vector<char> on(sample.size());
     for (std::size_t i = 0; i < sample.size(); ++i)
-    {
         on[i] = gt_walls.near(t.apply(sample[i]), tolerance) ? 1 : 0;
-        cells[cellOf(sample[i])].push_back(i);
-    }
+    const Neighbours around(sample, radius);
     std::vector<Eigen::Vector2d> out;
-    const double r2 = radius * radius;
     for (const auto& q : pts)
     {
         if (!gt_walls.near(t.apply(q), tolerance)) continue;
         std::size_t near = 0, placed = 0;
-        const auto [cx, cy] = cellOf(q);
-        for (long dx = -1; dx <= 1; ++dx)
-            for (long dy = -1; dy <= 1; ++dy)
-            {
-                const auto it = cells.find({cx + dx, cy + dy});
-                if (it == cells.end()) continue;
-                for (std::size_t j : it->second)
-                    if ((sample[j] - q).squaredNorm() <= r2) ++near, placed += on[j];
-            }
+        around.within(q, [&](std::size_t j) { ++near, placed += std::size_t(on[j]); });
         if (near > 0 && double(placed) >= share * double(near)) out.push_back(q);
     }
     return out;
