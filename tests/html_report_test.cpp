@@ -132,6 +132,32 @@ TEST(HtmlReport, ComparePageHoldsTheReport)
     EXPECT_NE(html.find("\"#1f77b4\""), std::string::npos);
 }
 
+// A part placed by its walls (brokenness steps 9 and 10) is said so in the page's groups, and a
+// pair of a map placed by its walls is stage 2 with its own line colour.
+TEST(HtmlReport, APartPlacedByItsWallsIsMarked)
+{
+    const OfficePair& p = office();
+    QualityReport report = p.report;
+    ASSERT_FALSE(report.brokenness.groups.empty());
+    ASSERT_FALSE(report.match.pairs.empty());
+    auto page = [&]
+    {
+        HtmlReportContent c;
+        c.kind = HtmlReportContent::Kind::Compare;
+        c.ground_truth = makeHtmlMap("office.yaml", p.gt_grid, p.gt);
+        c.entries.push_back(
+            makeHtmlEntry("rotated.yaml", p.gt_grid, p.gt, p.map_grid, p.map, report, false));
+        return renderHtmlReport(c);
+    };
+    EXPECT_EQ(count(page(), "\"by_walls\""), 0u);
+    report.brokenness.groups.front().by_walls = true;
+    report.match.pairs.front().stage = MatchStage::Walls;
+    const std::string html = page();
+    EXPECT_EQ(count(html, "\"by_walls\": true"), 1u);
+    EXPECT_NE(html.find("\"walls\": \"#008080\""), std::string::npos);  // teal
+    EXPECT_NE(html.find("placed by its walls"), std::string::npos);     // the page's words
+}
+
 TEST(HtmlReport, RankEntriesCarryThumbnailsAndErrors)
 {
     const OfficePair& p = office();

@@ -249,6 +249,8 @@ void writeReport(JsonWriter& w, const TopologyGraph& gt, const TopologyGraph& ma
         w.beginObject(true);
         w.key("squared_error_m2").value(g.squared_error_m2, 5);
         w.key("offset_m").value(g.offset_m, 3);
+        // A part placed by its walls (brokenness steps 9 and 10), said only where it is one.
+        if (g.by_walls) w.key("by_walls").value(true);
         w.key("transform");
         writeTransform(w, g.transform);
         w.key("vertices").beginArray(true);

@@ -132,7 +132,8 @@
          el('th', {text: 'off by [m]'})));
     b.groups.forEach((g, i) => groups.appendChild(el('tr', {},
       el('td', {class: 'text'}, el('span', {class: 'swatch', style: 'background:' +
-                                            groupColour(i)}), 'group ' + i),
+                                            groupColour(i)}),
+         'group ' + i + (g.by_walls ? ' (placed by its walls)' : '')),
       el('td', {text: String(g.vertices.length)}), el('td', {text: num(g.transform.yaw_deg, 2)}),
       el('td', {text: num(g.transform.x, 2) + ', ' + num(g.transform.y, 2)}),
       el('td', {text: num(g.squared_error_m2, 4)}),
@@ -358,7 +359,8 @@
         el('span', {class: 'swatch', style: 'background:' + groupColour(i)}),
         'group ' + i + ': ' + g.vertices.length + ' vertices, yaw ' +
         num(g.transform.yaw_deg, 1) + '\u00b0' +
-        (i ? ', off by ' + num(g.offset_m, 2) + ' m' : ''))),
+        (i ? ', off by ' + num(g.offset_m, 2) + ' m' : '') +
+        (g.by_walls ? ', placed by its walls' : ''))),
       el('span', {}, el('span', {class: 'swatch', style: 'background:' + C.no_group}),
          'matched, in no group'),
       el('span', {}, el('span', {class: 'swatch', style: 'background:' + C.unmatched}),
