@@ -45,9 +45,11 @@ struct BrokennessGroup
      * |T(q) - T'(q)|, T this group's transform and T' the larger group's that places them
      * nearest [m]. 0 for the largest group. */
     double offset_m = 0.0;
-    /** Ours: a part the match missed, placed by its walls (wall_parts). Its `gt_vertices` are
-     * then the free ground-truth vertices it places near free map vertices, `map_vertices`
-     * those map vertices (pair by pair; not pairs of the match); its squared error theirs. */
+    /** Ours: a part placed by its walls. A part the match missed (wall_parts): its
+     * `gt_vertices` are then the free ground-truth vertices it places near free map vertices,
+     * `map_vertices` those map vertices (pair by pair; not pairs of the match). A part of a map
+     * placed by its walls (map_by_walls; every group is one): its vertices' pairs are the
+     * match's. Its squared error theirs. */
     bool by_walls = false;
     std::vector<int> map_vertices;
 };
