@@ -217,8 +217,6 @@ std::optional<WallPart> clearPart(const std::vector<Placement>& best,
         return std::nullopt;
     WallPart part;
     part.transform = best[0].t;
-    part.share = best[0].share;
-    part.runner_up = runner;
     part.points = scored;
     return part;
 }

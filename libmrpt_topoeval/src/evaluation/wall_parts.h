@@ -31,10 +31,8 @@ struct WallPartRule
 /** One part placed by its walls. */
 struct WallPart
 {
-    Transform2D transform;   //!< T_gt_map of `placed` (the map as brokenness saw it)
-    double share = 0.0;      //!< its region's points within tolerance of a ground-truth wall
-    double runner_up = 0.0;  //!< the next distinct placement's share
-    std::vector<Eigen::Vector2d> points;     //!< its region's wall points (placed's frame)
+    Transform2D transform;                //!< T_gt_map of `placed` (the map as brokenness saw it)
+    std::vector<Eigen::Vector2d> points;  //!< its region's wall points (placed's frame)
     std::vector<std::pair<int, int>> pairs;  //!< (ground truth, map): free vertices it places
 };
 
