@@ -480,6 +480,9 @@ TEST(QualityEvaluator, TheMatchsGroupsAreTheBrokennessCandidates)
     // The compromise's turn by its vertices: its walls, most of them part 1's, vouch for part
     // 1's turn (0.05 degrees off) once the vertices' test refuses them (brokenness_walls_vouch).
     without.quality.brokenness_walls_vouch = false;
+    // ... and no part placed by its walls (step 9 places both true parts beside the compromise,
+    // whose fit explains neither part's walls).
+    without.quality.wall_parts = false;
     const QualityReport r = evaluate(gt, map, with);
     const QualityReport r0 = evaluate(gt, map, without);
     EXPECT_EQ(r.brokenness.degree, 1);
@@ -1005,6 +1008,54 @@ TEST(QualityEvaluator, APartTheMatchMissedIsPlacedByItsWalls)
     TopologyGraph sg, sm;
     const QualityReport same = evaluate(campus, campus, Parameters{}, &sg, &sm);
     EXPECT_EQ(evaluateMatch(sg, sm, same.match, qp).brokenness.groups.size(), 1u);
+}
+
+// Step 9 on a region that no one fit places (wall_part_split): the campus broken twice, with a
+// match of its west part only, leaves the two turned parts' walls unexplained, and they touch at
+// the second cut (one region). The known answer: two parts, turned back by -14 and +8 degrees,
+// each putting its own points of the campus back where they were.
+TEST(QualityEvaluator, TwoMissedPartsThatTouchArePlacedEachByItsWalls)
+{
+    TopologyGraph g, m;
+    const QualityReport full = evaluate(makeCampusMap(), brokenCampus(2), Parameters{}, &g, &m);
+    GraphMatch west = full.match;
+    west.pairs.erase(
+        std::remove_if(west.pairs.begin(), west.pairs.end(),
+                       [&](const VertexPair& p)
+                       { return g.vertices[p.ground_truth].position_m.x() > kBreaks[0].cut_x; }),
+        west.pairs.end());
+    ASSERT_GE(west.pairs.size(), 5u);
+    QualityParameters qp;
+    EXPECT_TRUE(qp.wall_part_split);  // on by default
+    qp.wall_part_split = false;
+    const QualityReport whole = evaluateMatch(g, m, west, qp);
+    EXPECT_EQ(whole.brokenness.degree, 0);
+
+    qp.wall_part_split = true;
+    const QualityReport r = evaluateMatch(g, m, west, qp);
+    ASSERT_EQ(r.brokenness.degree, 2);
+    // The middle part (between the cuts) is turned by the first break only; the east part by
+    // both. Each part's fit puts the campus's points of its own side back.
+    const Eigen::Vector2d middle(24.0, 20.0), east(40.0, 20.0);
+    int found = 0;
+    for (std::size_t k = 1; k < r.brokenness.groups.size(); ++k)
+    {
+        const BrokennessGroup& part = r.brokenness.groups[k];
+        EXPECT_TRUE(part.by_walls);
+        const double yaw = std::remainder(part.transform.yaw_deg, 360.0);
+        if (std::abs(yaw + kBreaks[0].yaw_deg) < 0.5)
+        {
+            EXPECT_LT((part.transform.apply(brokenPoint(2, middle)) - middle).norm(), 0.3);
+            found |= 1;
+        }
+        if (std::abs(yaw + kBreaks[0].yaw_deg + kBreaks[1].yaw_deg) < 0.5)
+        {
+            EXPECT_LT((part.transform.apply(brokenPoint(2, east)) - east).norm(), 0.3);
+            found |= 2;
+        }
+    }
+    EXPECT_EQ(found, 3);
+    EXPECT_GT(r.explained_walls.share, whole.explained_walls.share + 0.2);
 }
 
 // A map the match holds no group of (map_by_walls): placed part by part by its walls. The known

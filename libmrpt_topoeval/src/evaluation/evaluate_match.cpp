@@ -709,12 +709,9 @@ internal::WallPartRule wallPartRule(const TopologyGraph& gt, const TopologyGraph
     return rule;
 }
 
-/** The map placed by its walls (map_by_walls) when `given` holds no group (`walls`: both
- * graphs' wall points, shared with the steps after it); `out` its match
- * (the parts' pairs, stage Walls, each pair's isomorphism its part) when parts are kept. */
-internal::WallMap mapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
-                             const GraphMatch& given, const QualityParameters& p,
-                             internal::Walls& walls, GraphMatch& out)
+/** The rule of a part singled out by its region (map_by_walls_*; steps 9 and 10). */
+internal::WallMapRule wallMapRule(const TopologyGraph& gt, const TopologyGraph& map,
+                                  const QualityParameters& p)
 {
     internal::WallMapRule rule;
     rule.part = wallPartRule(gt, map, p);
@@ -726,6 +723,18 @@ internal::WallMap mapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     rule.min_explained = p.map_by_walls_min_explained;
     rule.max_parts = p.map_by_walls_max_parts;
     rule.slack_share = p.vertex_slack_share;
+    rule.max_overlap = p.wall_part_max_overlap;
+    return rule;
+}
+
+/** The map placed by its walls (map_by_walls) when `given` holds no group (`walls`: both
+ * graphs' wall points, shared with the steps after it); `out` its match
+ * (the parts' pairs, stage Walls, each pair's isomorphism its part) when parts are kept. */
+internal::WallMap mapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
+                             const GraphMatch& given, const QualityParameters& p,
+                             internal::Walls& walls, GraphMatch& out)
+{
+    const internal::WallMapRule rule = wallMapRule(gt, map, p);
     if (!walls.ok()) return {};
     std::vector<std::pair<int, int>> pairs;
     for (const VertexPair& pr : given.pairs) pairs.emplace_back(pr.ground_truth, pr.map);
@@ -1006,10 +1015,11 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
         const ExplainedWalls before = internal::explainedWalls(
             placed, placed, fits, walls.gt(),
             internal::wallTolerance(p.explained_wall_tolerance_m, ground_truth, placed));
-        const internal::WallPartRule rule = wallPartRule(ground_truth, placed, p);
+        const internal::WallMapRule rule = wallMapRule(ground_truth, placed, p);
         std::vector<Transform2D> larger = fits;
-        for (internal::WallPart& part : internal::findWallParts(
-                 ground_truth, placed, walls.gt(), before.unexplained_m, gt_free, map_free, rule))
+        for (internal::WallPart& part :
+             internal::findWallParts(ground_truth, placed, walls.gt(), before.unexplained_m,
+                                     gt_free, map_free, rule, fits, p.wall_part_split))
         {
             BrokennessGroup g;
             g.by_walls = true;

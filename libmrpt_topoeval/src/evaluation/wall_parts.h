@@ -36,14 +36,6 @@ struct WallPart
     std::vector<std::pair<int, int>> pairs;  //!< (ground truth, map): free vertices it places
 };
 
-/** The regions of `unexplained` (wall points of `placed` that no brokenness group explains, in
- * its frame: explainedWalls()'s), each placed on the ground truth's walls from every free map
- * vertex near it paired with every free ground-truth vertex (`*_free`: 1 for a matchable vertex
- * of no pair), under turns of `turn_step_deg`, the best distinct placements refined by MRPT's
- * ICP; a region whose best placement puts at least `min_share` of its points on a wall, and
- * whose next distinct one (5 degrees or 0.5 m away at the region's centre) at most
- * `max_runner_up` of that, is a part. Largest region first; a region an accepted part already
- * places is not placed again. Deterministic. */
 /** The rule for a map the match grouped nothing of (QualityParameters map_by_walls_*). */
 struct WallMapRule
 {
@@ -54,6 +46,7 @@ struct WallMapRule
     double min_explained = 0.9;          //!< the parts together explain this share of walls
     int max_parts = 4;                   //!< parts sought at most
     double slack_share = 0.1;            //!< a pair's reach: + this share of its clearance
+    double max_overlap = 0.5;  //!< a missed part's walls on ground-truth walls a part stands on
 };
 
 /** A map placed part by part by its walls. */
@@ -80,9 +73,24 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
                         const WallIndex& gt_walls, const WallIndex& map_walls,
                         const std::vector<std::pair<int, int>>& given, const WallMapRule& rule);
 
+/** The regions of `unexplained` (wall points of `placed` that no brokenness group explains, in
+ * its frame: explainedWalls()'s), each placed on the ground truth's walls from every free map
+ * vertex near it paired with every free ground-truth vertex (`*_free`: 1 for a matchable vertex
+ * of no pair), under turns of `rule.part.turn_step_deg`, the best distinct placements refined by
+ * MRPT's ICP; a region whose best placement puts at least `min_share` of its points on a wall, and
+ * whose next distinct one (5 degrees or 0.5 m away at the region's centre) at most
+ * `max_runner_up` of that, is a part. Largest region first; a region an accepted part already
+ * places is not placed again. With `split`, a region that no one fit places clearly may hold
+ * more than one part (two parts that touch at a cut): parts are singled out within it as
+ * placeMapByWalls() singles them out (rule.region_m, rule.region_share, at most rule.max_parts),
+ * each of which must also pair a vertex. A part that puts more than `rule.max_overlap` of its
+ * points on ground-truth walls where a group (`fits`: the groups' T_gt_map) or an accepted part
+ * puts the map's walls is refused: one place of the building is the image of one part of the
+ * map. Deterministic. */
 std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph& placed,
                                     const WallIndex& gt_walls,
                                     const std::vector<Eigen::Vector2f>& unexplained,
                                     const std::vector<char>& gt_free,
-                                    const std::vector<char>& map_free, const WallPartRule& rule);
+                                    const std::vector<char>& map_free, const WallMapRule& rule,
+                                    const std::vector<Transform2D>& fits, bool split);
 }  // namespace mrpt_topoeval::internal
