@@ -1012,14 +1012,15 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
         for (const auto& pr : match.pairs)
             gt_free[size_t(pr.ground_truth)] = 0, map_free[size_t(pr.map)] = 0;
         // The walls no group explains, by the explained walls' own rule, in placed's frame.
+        std::vector<Eigen::Vector2f> stood_on;
         const ExplainedWalls before = internal::explainedWalls(
             placed, placed, fits, walls.gt(),
-            internal::wallTolerance(p.explained_wall_tolerance_m, ground_truth, placed));
+            internal::wallTolerance(p.explained_wall_tolerance_m, ground_truth, placed), &stood_on);
         const internal::WallMapRule rule = wallMapRule(ground_truth, placed, p);
         std::vector<Transform2D> larger = fits;
         for (internal::WallPart& part :
              internal::findWallParts(ground_truth, placed, walls.gt(), before.unexplained_m,
-                                     gt_free, map_free, rule, fits, p.wall_part_split))
+                                     gt_free, map_free, rule, stood_on, p.wall_part_split))
         {
             BrokennessGroup g;
             g.by_walls = true;

@@ -7,7 +7,7 @@ namespace mrpt_topoeval::internal
 {
 ExplainedWalls explainedWalls(const TopologyGraph& map, const TopologyGraph& placed,
                               const std::vector<Transform2D>& fits, const WallIndex& gt_walls,
-                              double tolerance_m)
+                              double tolerance_m, std::vector<Eigen::Vector2f>* placed_explained)
 {
     ExplainedWalls e;
     e.tolerance_m = tolerance_m;
@@ -22,9 +22,10 @@ ExplainedWalls explainedWalls(const TopologyGraph& map, const TopologyGraph& pla
         bool near = false;
         // Any part explains a wall: a broken map's parts each carry their own walls.
         for (const Transform2D& t : fits)
-            if (gt_walls.near(t.apply(q), tolerance_m))
+            if (const Eigen::Vector2d at = t.apply(q); gt_walls.near(at, tolerance_m))
             {
                 near = true;
+                if (placed_explained) placed_explained->push_back(at.cast<float>());
                 break;
             }
         if (near)

@@ -332,46 +332,11 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
                                     const std::vector<Eigen::Vector2f>& unexplained,
                                     const std::vector<char>& gt_free,
                                     const std::vector<char>& map_free, const WallMapRule& map_rule,
-                                    const std::vector<Transform2D>& fits, bool split)
+                                    const std::vector<Eigen::Vector2f>& stood_on, bool split)
 {
     const WallPartRule& rule = map_rule.part;
     std::vector<WallPart> parts;
     if (gt_walls.empty() || unexplained.empty()) return parts;
-    // The ground-truth walls a part of the map already stands on: where the groups' fits put the
-    // map's walls they explain, then each accepted part's. One place of the building is the
-    // image of one part of the map; a region that no group explains and that lands where a
-    // group stands is map the ground truth lacks (the whole campus against its west half: its
-    // east rooms fit the west's), not a part.
-    std::vector<std::unique_ptr<WallIndex>> taken;
-    {
-        std::vector<Eigen::Vector2f> on;
-        for (const auto& w : placed.wall_points_m)
-            for (const Transform2D& f : fits)
-            {
-                const Eigen::Vector2d at = f.apply(w.cast<double>());
-                if (gt_walls.near(at, map_rule.explained_tolerance_m))
-                {
-                    on.push_back(at.cast<float>());
-                    break;
-                }
-            }
-        if (!on.empty()) taken.push_back(std::make_unique<WallIndex>(on));
-    }
-    auto overlap = [&](const WallPart& part)
-    {
-        std::size_t n = 0;
-        for (const auto& q : part.points)
-        {
-            const Eigen::Vector2d at = part.transform.apply(q);
-            for (const auto& t : taken)
-                if (t->near(at, rule.tolerance_m))
-                {
-                    ++n;
-                    break;
-                }
-        }
-        return part.points.empty() ? 0.0 : double(n) / double(part.points.size());
-    };
     std::vector<Eigen::Vector2d> rest;
     for (const auto& w : unexplained) rest.push_back(w.cast<double>());
     const double cell = std::max(placed.map.resolution_m, 1e-6);
@@ -394,35 +359,59 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
     for (const auto& w : gt.wall_points_m) reference.insertPoint(w.x(), w.y(), 0.0f);
     const double res = std::max(gt.map.resolution_m, placed.map.resolution_m);
 
+    // The ground-truth walls a part of the map already stands on: where the groups' fits put the
+    // map's walls they explain (`stood_on`), then each accepted part's. One place of the building
+    // is the image of one part of the map; a region that no group explains and that lands where
+    // a group stands is map the ground truth lacks (the whole campus against its west half: its
+    // east rooms fit the west's), not a part.
+    std::vector<std::unique_ptr<WallIndex>> taken;
+    if (!stood_on.empty()) taken.push_back(std::make_unique<WallIndex>(stood_on));
+    // The share of a part's points its fit puts where a part already stands.
+    auto overlap = [&](const WallPart& part)
+    {
+        std::size_t n = 0;
+        for (const auto& q : part.points)
+        {
+            const Eigen::Vector2d at = part.transform.apply(q);
+            for (const auto& t : taken)
+                if (t->near(at, rule.tolerance_m))
+                {
+                    ++n;
+                    break;
+                }
+        }
+        return part.points.empty() ? 0.0 : double(n) / double(part.points.size());
+    };
+
     // A part's pairs: each free ground-truth vertex its fit puts within pair_distance_m of a
     // free map vertex (the nearest; each vertex in one part's pairs only, ground-truth vertices
     // in id order). A part with none is refused when `need_pair`.
     auto keep = [&](WallPart part, bool need_pair)
     {
-        std::vector<char> gt_taken = gt_left, map_taken = map_left;
+        std::vector<char> gt_next = gt_left, map_next = map_left;
         for (int g : gt_pivots)
         {
-            if (!gt_taken[size_t(g)]) continue;
+            if (!gt_next[size_t(g)]) continue;
             const Eigen::Vector2d& p = gt.vertices[size_t(g)].position_m;
             int nearest = -1;
             double d_best = rule.pair_distance_m;
             for (std::size_t m = 0; m < placed.vertices.size(); ++m)
             {
-                if (!map_taken[m]) continue;
+                if (!map_next[m]) continue;
                 const double d = (part.transform.apply(placed.vertices[m].position_m) - p).norm();
                 if (d <= d_best) d_best = d, nearest = int(m);
             }
             if (nearest >= 0)
             {
-                map_taken[size_t(nearest)] = 0;
-                gt_taken[size_t(g)] = 0;
+                map_next[size_t(nearest)] = 0;
+                gt_next[size_t(g)] = 0;
                 part.pairs.emplace_back(g, nearest);
             }
         }
         if (need_pair && part.pairs.empty()) return false;
         if (overlap(part) > map_rule.max_overlap) return false;
-        gt_left = std::move(gt_taken);
-        map_left = std::move(map_taken);
+        gt_left = std::move(gt_next);
+        map_left = std::move(map_next);
         std::vector<Eigen::Vector2f> on;
         for (const auto& q : part.points) on.push_back(part.transform.apply(q).cast<float>());
         taken.push_back(std::make_unique<WallIndex>(on));

@@ -84,13 +84,14 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
  * more than one part (two parts that touch at a cut): parts are singled out within it as
  * placeMapByWalls() singles them out (rule.region_m, rule.region_share, at most rule.max_parts),
  * each of which must also pair a vertex. A part that puts more than `rule.max_overlap` of its
- * points on ground-truth walls where a group (`fits`: the groups' T_gt_map) or an accepted part
- * puts the map's walls is refused: one place of the building is the image of one part of the
+ * points on ground-truth walls where a group puts the map's walls it explains (`stood_on`, in the
+ * ground truth's frame: explainedWalls()'s `placed_explained`) or an accepted part puts its own
+ * is refused: one place of the building is the image of one part of the
  * map. Deterministic. */
 std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph& placed,
                                     const WallIndex& gt_walls,
                                     const std::vector<Eigen::Vector2f>& unexplained,
                                     const std::vector<char>& gt_free,
                                     const std::vector<char>& map_free, const WallMapRule& rule,
-                                    const std::vector<Transform2D>& fits, bool split);
+                                    const std::vector<Eigen::Vector2f>& stood_on, bool split);
 }  // namespace mrpt_topoeval::internal
