@@ -1126,6 +1126,30 @@ TEST(QualityEvaluator, AMapTheMatchCannotGroupIsPlacedByItsWalls)
     }
 }
 
+// One place, one part (wall_part_max_overlap) in step 10: the house plan's west 60 % as the
+// ground truth, the whole plan as the map (a robot map that runs beyond its plan). Its graph
+// pairs too few vertices for a group, so the map is placed by its walls: its west part where it
+// is, and, without the rule, its east rooms as a second part onto the west ones, a break that is
+// not there. With it no break is counted.
+TEST(QualityEvaluator, AMapBeyondItsGroundTruthIsNotPlacedTwice)
+{
+    const auto whole = loadMap(shareDir() + "/maps/house_gt_trinary_res0.05.yaml").grid;
+    COccupancyGridMap2D west = whole;
+    const unsigned cut = unsigned(0.6 * west.getSizeX());
+    for (unsigned cy = 0; cy < west.getSizeY(); ++cy)
+        for (unsigned cx = cut; cx < west.getSizeX(); ++cx) west.setCell(cx, cy, 0.5f);
+    Parameters p;
+    EXPECT_EQ(p.quality.wall_part_max_overlap, 0.5);  // the default
+    p.quality.wall_part_max_overlap = 1.0;
+    const QualityReport without = evaluate(west, whole, p);
+    EXPECT_GE(without.brokenness.degree, 1) << "the east rooms placed onto the west ones";
+    p.quality.wall_part_max_overlap = 0.5;
+    const QualityReport with = evaluate(west, whole, p);
+    EXPECT_EQ(with.brokenness.degree, 0);
+    for (const BrokennessGroup& part : with.brokenness.groups)
+        EXPECT_LT(std::abs(std::remainder(part.transform.yaw_deg, 360.0)), 1.0);
+}
+
 TEST(QualityEvaluator, ExplainedWallsAreTheMapsSideOfCoverage)
 {
     const COccupancyGridMap2D campus = makeCampusMap();

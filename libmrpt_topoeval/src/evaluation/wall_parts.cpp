@@ -325,6 +325,42 @@ std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph&
                      [](const Placement& a, const Placement& b) { return a.share > b.share; });
     return clearPart(distinct(found, 2, centre), scored, pr);
 }
+
+/** The places on the ground truth's walls that parts of the map stand on: one place of the
+ * building is the image of one part of the map. */
+class StoodOn
+{
+public:
+    /** Places (the ground truth's frame). */
+    void add(const std::vector<Eigen::Vector2f>& places)
+    {
+        if (!places.empty()) m_places.push_back(std::make_unique<WallIndex>(places));
+    }
+    /** Where `part`'s fit puts its points. */
+    void add(const WallPart& part)
+    {
+        std::vector<Eigen::Vector2f> places;
+        for (const auto& q : part.points) places.push_back(part.transform.apply(q).cast<float>());
+        add(places);
+    }
+    /** The share of `part`'s points its fit puts within `tolerance` of a place stood on. */
+    double share(const WallPart& part, double tolerance) const
+    {
+        std::size_t n = 0;
+        for (const auto& q : part.points)
+        {
+            const Eigen::Vector2d at = part.transform.apply(q);
+            n += std::any_of(m_places.begin(), m_places.end(),
+                             [&](const auto& w) { return w->near(at, tolerance); })
+                     ? 1
+                     : 0;
+        }
+        return part.points.empty() ? 0.0 : double(n) / double(part.points.size());
+    }
+
+private:
+    std::vector<std::unique_ptr<WallIndex>> m_places;  // WallIndex is not copied
+};
 }  // namespace
 
 std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph& placed,
@@ -364,24 +400,8 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
     // is the image of one part of the map; a region that no group explains and that lands where
     // a group stands is map the ground truth lacks (the whole campus against its west half: its
     // east rooms fit the west's), not a part.
-    std::vector<std::unique_ptr<WallIndex>> taken;
-    if (!stood_on.empty()) taken.push_back(std::make_unique<WallIndex>(stood_on));
-    // The share of a part's points its fit puts where a part already stands.
-    auto overlap = [&](const WallPart& part)
-    {
-        std::size_t n = 0;
-        for (const auto& q : part.points)
-        {
-            const Eigen::Vector2d at = part.transform.apply(q);
-            for (const auto& t : taken)
-                if (t->near(at, rule.tolerance_m))
-                {
-                    ++n;
-                    break;
-                }
-        }
-        return part.points.empty() ? 0.0 : double(n) / double(part.points.size());
-    };
+    StoodOn stood;
+    stood.add(stood_on);
 
     // A part's pairs: each free ground-truth vertex its fit puts within pair_distance_m of a
     // free map vertex (the nearest; each vertex in one part's pairs only, ground-truth vertices
@@ -409,12 +429,10 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
             }
         }
         if (need_pair && part.pairs.empty()) return false;
-        if (overlap(part) > map_rule.max_overlap) return false;
+        if (stood.share(part, rule.tolerance_m) > map_rule.max_overlap) return false;
         gt_left = std::move(gt_next);
         map_left = std::move(map_next);
-        std::vector<Eigen::Vector2f> on;
-        for (const auto& q : part.points) on.push_back(part.transform.apply(q).cast<float>());
-        taken.push_back(std::make_unique<WallIndex>(on));
+        stood.add(part);
         parts.push_back(std::move(part));
         return true;
     };
@@ -494,11 +512,15 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     // ground-truth vertex. (Only those of a like clearance, as a rigid motion keeps it, lost
     // floorplan_lab_ipa/broken_3: at a cut a vertex's clearance changes.)
     std::vector<WallPart> parts;
+    StoodOn stood;
     while (int(parts.size()) < rule.max_parts && lengthOf(rest) >= pr.min_length_m)
     {
         std::optional<WallPart> part = singledOut(gt, map, gt_walls, reference, rest, map_free,
                                                   gt_pivots, kMapPivots, res, rule);
-        if (!part) break;
+        // One place, one part: a part found where an earlier one stands is the same walls
+        // again (the whole house against its west half: its east rooms on the west's).
+        if (!part || stood.share(*part, pr.tolerance_m) > rule.max_overlap) break;
+        stood.add(*part);
         parts.push_back(std::move(*part));
         // Its walls leave: the next part is sought on the rest.
         const std::size_t before = rest.size();
