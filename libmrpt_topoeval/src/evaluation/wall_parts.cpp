@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -222,6 +223,12 @@ std::optional<WallPart> clearPart(const std::vector<Placement>& best,
     return part;
 }
 
+/** The wall length of `pts`, wall points of cells `cell` wide (points x cell size) [m]. */
+double wallLength(const std::vector<Eigen::Vector2d>& pts, double cell)
+{
+    return double(pts.size()) * cell;
+}
+
 Eigen::Vector2d centreOf(const std::vector<Eigen::Vector2d>& pts)
 {
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
@@ -307,7 +314,7 @@ std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph&
     const Transform2D& t = first[0].t;
     const std::vector<Eigen::Vector2d> region =
         regionOf(gt_walls, rest, t, pr.tolerance_m, rule.region_m, rule.region_share);
-    if (double(region.size()) * cell < pr.min_length_m) return std::nullopt;
+    if (wallLength(region, cell) < pr.min_length_m) return std::nullopt;
     scored = evenlyThinned(region, kScoredPoints);
     const Eigen::Vector2d centre = centreOf(region);
     // Its own pivots (else the rest's: with none its rivals would go untried, and any
@@ -376,8 +383,8 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
     std::vector<Eigen::Vector2d> rest;
     for (const auto& w : unexplained) rest.push_back(w.cast<double>());
     const double cell = std::max(placed.map.resolution_m, 1e-6);
-    auto lengthOf = [&](const std::vector<Eigen::Vector2d>& pts)
-    { return double(pts.size()) * cell; };
+    auto lengthOf = [cell](const std::vector<Eigen::Vector2d>& pts)
+    { return wallLength(pts, cell); };
     if (lengthOf(rest) < rule.min_length_m) return parts;
 
     // Vertices free for a part's pairs (each goes to one part).
@@ -449,11 +456,11 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
                 placed_already = true;
         if (placed_already) continue;
         // Its pivots: free map vertices whose clearance (+ a margin) reaches the region.
-        const std::vector<int> map_pivots = pivotsNear(placed, scored, map_free);
-        if (map_pivots.empty()) continue;
-        std::vector<std::pair<int, int>> pairs;
-        for (int m : map_pivots)
-            for (int g : gt_pivots) pairs.emplace_back(m, g);
+        // (All of them: a region's few, unlike a whole map's.)
+        const std::vector<std::pair<int, int>> pairs =
+            pivotPairs(pivotsNear(placed, scored, map_free), gt_pivots,
+                       std::numeric_limits<std::size_t>::max());
+        if (pairs.empty()) continue;
         const std::vector<Placement> best = bestPlacements(
             gt, placed, gt_walls, reference, region, scored, scored, centre, pairs, res, rule);
         if (std::optional<WallPart> clear = clearPart(best, scored, rule))
@@ -506,8 +513,8 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     mrpt::maps::CSimplePointsMap reference;
     for (const auto& w : gt.wall_points_m) reference.insertPoint(w.x(), w.y(), 0.0f);
     const double res = std::max(gt.map.resolution_m, map.map.resolution_m);
-    auto lengthOf = [&](const std::vector<Eigen::Vector2d>& pts)
-    { return double(pts.size()) * cell; };
+    auto lengthOf = [cell](const std::vector<Eigen::Vector2d>& pts)
+    { return wallLength(pts, cell); };
     // The whole map's pivots are many: at most kMapPivots map vertices, each with every
     // ground-truth vertex. (Only those of a like clearance, as a rigid motion keeps it, lost
     // floorplan_lab_ipa/broken_3: at a cut a vertex's clearance changes.)

@@ -36,7 +36,9 @@ struct WallPart
     std::vector<std::pair<int, int>> pairs;  //!< (ground truth, map): free vertices it places
 };
 
-/** The rule for a map the match grouped nothing of (QualityParameters map_by_walls_*). */
+/** The rule of parts singled out by their region (QualityParameters map_by_walls_*,
+ * wall_part_max_overlap): a map the match grouped nothing of (placeMapByWalls()), and a region of
+ * missed walls that no one fit places (findWallParts()). */
 struct WallMapRule
 {
     WallPartRule part;                   //!< each part's placement, as a missed part's
@@ -46,7 +48,7 @@ struct WallMapRule
     double min_explained = 0.9;          //!< the parts together explain this share of walls
     int max_parts = 4;                   //!< parts sought at most
     double slack_share = 0.1;            //!< a pair's reach: + this share of its clearance
-    double max_overlap = 0.5;  //!< a missed part's walls on ground-truth walls a part stands on
+    double max_overlap = 0.5;            //!< a part's points where another part stands, at most
 };
 
 /** A map placed part by part by its walls. */
