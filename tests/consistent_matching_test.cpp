@@ -771,9 +771,10 @@ std::vector<Eigen::Vector2f> slopedAndUprightWalls(std::mt19937& rng, const Eige
 
 TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
 {
-    // near() answers from its cells (a cell holding a wall point) before it searches, and
-    // around() keeps what it found per place: both must say what a look at every wall point
-    // says, at every radius, for points on, near and far from the walls and outside them all.
+    // near() answers from its cells (a cell holding a wall point, or none within reach of one)
+    // before it searches, and around() keeps what it found per place: both must say what a
+    // look at every wall point says, at every radius, for points on, near and far from the
+    // walls and outside them all.
     std::mt19937 rng(7);
     const std::vector<Eigen::Vector2f> walls = slopedAndUprightWalls(rng, {0.0f, 0.0f}, 4.0f);
     const internal::WallIndex index(walls);
@@ -784,18 +785,26 @@ TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
         return best;
     };
     std::uniform_real_distribution<double> anywhere(-14.0, 14.0);
-    int near_answers = 0;
+    std::uniform_int_distribution<std::size_t> some_wall(0, walls.size() - 1);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    int near_answers = 0, just_beyond = 0;
     for (const double r : {0.05, 0.15, 0.6})
-        for (int k = 0; k < 4000; ++k)
+        for (int k = 0; k < 8000; ++k)
         {
-            const Eigen::Vector2d p(anywhere(rng), anywhere(rng));
+            // Every other point within 2 r of a wall point: the edge of the cells within reach.
+            const Eigen::Vector2d p =
+                k % 2 ? Eigen::Vector2d(anywhere(rng), anywhere(rng))
+                      : Eigen::Vector2d(walls[some_wall(rng)].cast<double>() +
+                                        2.0 * r * Eigen::Vector2d(unit(rng), unit(rng)));
             const double d = nearest(p);
             // A point a hair from the radius may fall either way in the search's floats.
             if (std::abs(d - r) < 1e-4) continue;
             EXPECT_EQ(index.near(p, r), d <= r) << "r " << r << " at " << p.transpose();
             near_answers += d <= r;
+            just_beyond += d > r && d < 2.0 * r;
         }
     EXPECT_GT(near_answers, 200);  // the shortcut was asked, not only the far points
+    EXPECT_GT(just_beyond, 1000);  // and the search beside the walls
     // Radii too small for cells (their count would overflow) or bigger than the walls' extent.
     const Eigen::Vector2d on_wall = walls[10].cast<double>();
     EXPECT_TRUE(index.near(on_wall, 1e-12));

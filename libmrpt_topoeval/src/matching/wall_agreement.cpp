@@ -19,6 +19,11 @@ constexpr long kMaxBuckets = 1 << 21;
 /** How much farther than r the buckets are looked in: far more than the floats' rounding
  * (about 10^-7 of r), so that no point the KD-tree's floats put within r is missed. */
 constexpr double kBucketMargin = 1e-3;
+/** near()'s cells are r / (2 sqrt 2) wide: a wall point within r of p (r / size = 2.83 cells,
+ * and the floats' margin) lies at most 3 cells from p's cell along each axis, so within 4. */
+constexpr long kReachCells = 4;
+/** A cell's flags: it holds a wall point; a wall point lies within kReachCells of it. */
+constexpr std::uint8_t kHeld = 1, kReach = 2;
 /** around()'s buckets [m]: a vertex's clearance + margin (1-3 m) spans a few of them. */
 constexpr double kAroundBucket_m = 0.5;
 /** The walls compared for the share: a few hundred points give a mean to a few percent. */
@@ -114,7 +119,30 @@ const WallIndex::Cells& WallIndex::cellsFor(double r) const
         {
             const long ix = std::min(nx - 1, long((xs[i] - c.origin.x()) / size));
             const long iy = std::min(ny - 1, long((ys[i] - c.origin.y()) / size));
-            c.held[std::size_t(iy * nx + ix)] = 1;
+            c.held[std::size_t(iy * nx + ix)] = kHeld;
+        }
+        // The held cells grown by kReachCells along x, then along y (a square window): one
+        // byte per cell, read once per query.
+        std::vector<std::uint8_t> along_x(c.held.size(), 0);
+        for (long y = 0; y < ny; ++y)
+        {
+            long last = -kReachCells - 1;  // the last held cell of the row at x + k or left
+            const std::uint8_t* row = &c.held[std::size_t(y * nx)];
+            for (long x = -kReachCells; x < nx; ++x)
+            {
+                if (x + kReachCells < nx && row[x + kReachCells]) last = x + kReachCells;
+                if (x >= 0 && last >= x - kReachCells) along_x[std::size_t(y * nx + x)] = 1;
+            }
+        }
+        for (long x = 0; x < nx; ++x)
+        {
+            long last = -kReachCells - 1;
+            for (long y = -kReachCells; y < ny; ++y)
+            {
+                if (y + kReachCells < ny && along_x[std::size_t((y + kReachCells) * nx + x)])
+                    last = y + kReachCells;
+                if (y >= 0 && last >= y - kReachCells) c.held[std::size_t(y * nx + x)] |= kReach;
+            }
         }
     }
     // A point within r (in the KD-tree's floats, which may stretch r by a few parts in 10^7)
@@ -130,9 +158,12 @@ bool WallIndex::near(const Eigen::Vector2d& p, double r) const
     if (!c.held.empty())
     {
         const double fx = (p.x() - c.origin.x()) / c.size, fy = (p.y() - c.origin.y()) / c.size;
-        if (fx >= 0.0 && fy >= 0.0 && fx < double(c.nx) && fy < double(c.ny) &&
-            c.held[std::size_t(long(fy) * c.nx + long(fx))])
-            return true;
+        if (fx >= 0.0 && fy >= 0.0 && fx < double(c.nx) && fy < double(c.ny))
+        {
+            const std::uint8_t cell = c.held[std::size_t(long(fy) * c.nx + long(fx))];
+            if (cell & kHeld) return true;
+            if (!(cell & kReach)) return false;
+        }
     }
     // The query as the KD-tree takes it.
     const float qx = float(p.x()), qy = float(p.y());

@@ -82,13 +82,15 @@ private:
      * a cell lies within r / 2 of it, so near() answers without a search. Elsewhere the
      * buckets, a little over r wide, decide: a point within r lies in p's bucket or one of its
      * 8 neighbours. Made once per r (a wall agreement asks it of hundreds of points, each
-     * under nine shifts of the fit). */
+     * under nine shifts of the fit). A cell also knows whether a held cell lies within
+     * kReachCells of it (where a wall point within r of p lies); a point in a cell that is not
+     * has no wall point within r, also answered without a search. */
     struct Cells  // none held: too many cells for r
     {
         double size = 0.0;
         Eigen::Vector2d origin{0.0, 0.0};
         long nx = 0, ny = 0;
-        std::vector<std::uint8_t> held;
+        std::vector<std::uint8_t> held;  //!< kHeld | kReach flags per cell
         Buckets buckets;
     };
     mutable std::map<double, Cells> m_cells;
