@@ -789,7 +789,7 @@ TEST(ConsistentMatching, WallIndexAnswersAsASearchOfEveryPoint)
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     int near_answers = 0, just_beyond = 0;
     for (const double r : {0.05, 0.15, 0.6})
-        for (int k = 0; k < 8000; ++k)
+        for (int k = 0; k < 4000; ++k)
         {
             // Every other point within 2 r of a wall point: the edge of the cells within reach.
             const Eigen::Vector2d p =

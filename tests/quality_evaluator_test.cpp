@@ -986,7 +986,7 @@ TEST(QualityEvaluator, APartTheMatchMissedIsPlacedByItsWalls)
     EXPECT_FALSE(with.brokenness.groups.front().by_walls);
     EXPECT_NEAR(std::remainder(part.transform.yaw_deg + kBreaks[0].yaw_deg, 360.0), 0.0, 0.5);
     // Where it puts the part: the breaks' own place for every ground-truth point east of the cut.
-    for (const Eigen::Vector2d p : {Eigen::Vector2d(30.0, 10.0), Eigen::Vector2d(45.0, 25.0)})
+    for (const Eigen::Vector2d& p : {Eigen::Vector2d(30.0, 10.0), Eigen::Vector2d(45.0, 25.0)})
         EXPECT_LT((part.transform.apply(brokenPoint(1, p)) - p).norm(), 0.3) << p.transpose();
     // Its pairs are not the match's, and each is true by the breaks.
     EXPECT_EQ(with.match.pairs.size(), missed.pairs.size());
@@ -1088,9 +1088,9 @@ TEST(QualityEvaluator, AMapTheMatchCannotGroupIsPlacedByItsWalls)
             east = &part.transform;
     }
     ASSERT_TRUE(west && east);
-    for (const Eigen::Vector2d p : {Eigen::Vector2d(5.0, 5.0), Eigen::Vector2d(10.0, 20.0)})
+    for (const Eigen::Vector2d& p : {Eigen::Vector2d(5.0, 5.0), Eigen::Vector2d(10.0, 20.0)})
         EXPECT_LT((west->apply(brokenPoint(1, p)) - p).norm(), 0.3) << p.transpose();
-    for (const Eigen::Vector2d p : {Eigen::Vector2d(30.0, 10.0), Eigen::Vector2d(45.0, 25.0)})
+    for (const Eigen::Vector2d& p : {Eigen::Vector2d(30.0, 10.0), Eigen::Vector2d(45.0, 25.0)})
         EXPECT_LT((east->apply(brokenPoint(1, p)) - p).norm(), 0.3) << p.transpose();
     // Its pairs are the match, each true by the breaks: where one part puts its ground-truth
     // vertex (a vertex at the cut is made by both parts' walls, as the validator's truth says).

@@ -20,10 +20,13 @@ namespace
 // A region's points scored per placement: evenly thinned to this many (the coarse search
 // scores turns x pivots x ground-truth vertices placements).
 constexpr std::size_t kScoredPoints = 300;
-// A region's coarse placements are scored first on kFirstScoredPoints of those points, then the
-// best of them on all, until this many distinct ones are among those (1500-2000 placements of
-// 10^5-10^6 on the Intel RBPF snapshots; the 20 refined are those all scored on every point
-// would give but for ties at the twentieth's share).
+// Coarse placements are scored first on a kFirstRound-th of their points (at least
+// kFirstRoundMin), then the best of them on all, until kRescoredDistinct distinct ones are among
+// those (1500-2000 placements of 10^5-10^6 on the Intel RBPF snapshots, where the 20 refined
+// are those scoring every placement on every point gives but for ties at the twentieth's share;
+// every corpus's outputs the same but two groups' turns by 0.01-0.07 degrees).
+constexpr std::size_t kFirstRound = 5;
+constexpr std::size_t kFirstRoundMin = 12;
 constexpr std::size_t kRescoredDistinct = 1000;
 // The best coarse placements refined by ICP, and two placements this far apart are distinct.
 constexpr std::size_t kRefined = 20;
@@ -181,10 +184,11 @@ std::vector<Placement> bestPlacements(
     const WallPartRule& rule)
 {
     // Coarse: every turn, every pivot pair (map vertex, ground-truth vertex), in two rounds:
-    // each placement scored on kFirstScoredPoints of coarse_pts, the best of those on all of
+    // each placement scored on a kFirstRound-th of coarse_pts, the best of those on all of
     // coarse_pts (a large region has thousands of pivot pairs: 10^5-10^6 placements, each
     // scored on 300 points took 16 s of a broken Intel snapshot's compare).
-    const std::vector<Eigen::Vector2d> first_pts = evenlyThinned(coarse_pts, kFirstScoredPoints);
+    const std::vector<Eigen::Vector2d> first_pts =
+        evenlyThinned(coarse_pts, std::max(kFirstRoundMin, coarse_pts.size() / kFirstRound));
     std::vector<Placement> coarse;
     const int turns = std::max(1, int(std::lround(360.0 / rule.turn_step_deg)));
     for (int k = 0; k < turns; ++k)
@@ -239,20 +243,62 @@ std::vector<Placement> bestPlacements(
     }
     std::stable_sort(refined.begin(), refined.end(),
                      [](const Placement& a, const Placement& b) { return a.share > b.share; });
-    return distinct(refined, 2, centre);
+    return distinct(refined, kRefined, centre);
 }
 
-/** The part the best of `best` (the two best distinct placements, best first) is, when it puts
- * at least min_share of the region on a wall and the runner-up at most max_runner_up of that:
- * the walls single it out. `scored` its region's points. */
+/** How many of `map_vertices` (a region's) `t` puts within `reach` of a vertex of `gt_vertices`
+ * (the nearest not taken, map vertices in order). */
+int pinned(const TopologyGraph& gt, const TopologyGraph& map, const std::vector<int>& map_vertices,
+           const std::vector<int>& gt_vertices, const Transform2D& t, double reach)
+{
+    std::vector<char> taken(gt.vertices.size(), 0);
+    int n = 0;
+    for (int m : map_vertices)
+    {
+        const Eigen::Vector2d at = t.apply(map.vertices[size_t(m)].position_m);
+        int nearest = -1;
+        double d_best = reach;
+        for (int g : gt_vertices)
+        {
+            if (taken[size_t(g)]) continue;
+            const double d = (gt.vertices[size_t(g)].position_m - at).norm();
+            if (d <= d_best) d_best = d, nearest = g;
+        }
+        if (nearest >= 0) taken[size_t(nearest)] = 1, ++n;
+    }
+    return n;
+}
+
+/** The map vertices of `pairs` (pivot pairs), each once, in order. */
+std::vector<int> mapVerticesOf(const std::vector<std::pair<int, int>>& pairs)
+{
+    std::vector<int> out;
+    for (const auto& pr : pairs) out.push_back(pr.first);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+/** The part the best of `best` (distinct placements, best first) is, when it puts at least
+ * min_share of the region on a wall and the runner-up at most max_runner_up of that: the walls
+ * single it out. When a rival's walls come closer, the vertices may: the best is clear when it
+ * pins (`pins`) at least min_pin_lead more of the region's vertices than every rival within
+ * the walls' doubt (a corridor slid by a door's spacing keeps its walls and pins fewer). `scored`
+ * its region's points. */
+template <class Pins>
 std::optional<WallPart> clearPart(const std::vector<Placement>& best,
                                   const std::vector<Eigen::Vector2d>& scored,
-                                  const WallPartRule& rule)
+                                  const WallPartRule& rule, Pins pins)
 {
-    if (best.empty()) return std::nullopt;
-    const double runner = best.size() > 1 ? best[1].share : 0.0;
-    if (best[0].share < rule.min_share || runner > rule.max_runner_up * best[0].share)
-        return std::nullopt;
+    if (best.empty() || best[0].share < rule.min_share) return std::nullopt;
+    const double doubt = rule.max_runner_up * best[0].share;
+    if (best.size() > 1 && best[1].share > doubt)
+    {
+        if (rule.min_pin_lead <= 0) return std::nullopt;
+        const int own = pins(best[0].t);
+        for (std::size_t k = 1; k < best.size() && best[k].share > doubt; ++k)
+            if (own - pins(best[k].t) < rule.min_pin_lead) return std::nullopt;
+    }
     WallPart part;
     part.transform = best[0].t;
     part.points = scored;
@@ -366,7 +412,10 @@ std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph&
     found.push_back({shareOn(gt_walls, scored, t, pr.tolerance_m), t});
     std::stable_sort(found.begin(), found.end(),
                      [](const Placement& a, const Placement& b) { return a.share > b.share; });
-    return clearPart(distinct(found, 2, centre), scored, pr);
+    const std::vector<int> own_vertices = mapVerticesOf(pivots);
+    return clearPart(distinct(found, kRefined, centre), scored, pr,
+                     [&](const Transform2D& x)
+                     { return pinned(gt, map, own_vertices, gt_pivots, x, pr.pair_distance_m); });
 }
 
 /** The places on the ground truth's walls that parts of the map stand on: one place of the
@@ -499,7 +548,12 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
         if (pairs.empty()) continue;
         const std::vector<Placement> best = bestPlacements(
             gt, placed, gt_walls, reference, region, scored, scored, centre, pairs, res, rule);
-        if (std::optional<WallPart> clear = clearPart(best, scored, rule))
+        const std::vector<int> region_vertices = mapVerticesOf(pairs);
+        if (std::optional<WallPart> clear = clearPart(
+                best, scored, rule,
+                [&](const Transform2D& x) {
+                    return pinned(gt, placed, region_vertices, gt_pivots, x, rule.pair_distance_m);
+                }))
         {
             keep(std::move(*clear), false);
             continue;

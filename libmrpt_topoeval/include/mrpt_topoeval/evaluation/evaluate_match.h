@@ -179,6 +179,13 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     /** ... while the next distinct placement (5 degrees or 0.5 m away) reaches at most this
      * share of the best's: a placement the walls do not single out is refused [ratio]. */
     double wall_part_max_runner_up = 0.8;
+    /** ... or, when a rival comes closer, the best pins at least this many more of the
+     * region's free map vertices (within wall_part_pair_distance_m of a free ground-truth
+     * vertex) than every rival above that share: walls alone leave a corridor in doubt along
+     * itself, and a corridor slid by a door's spacing pins fewer (one more broken map exactly
+     * right on the standard corpus, floorplan_Freiburg79_scan/broken_3; doc/validation.md,
+     * "Session 46"). 0 = walls alone [vertices]. */
+    int wall_part_min_pin_lead = 2;
     /** ... placements tried at turns this far apart before ICP refines the best [deg]. */
     double wall_part_turn_step_deg = 3.0;
     /** ... the part's pairs: free ground-truth vertices it puts this near a free map vertex,
