@@ -269,16 +269,6 @@ int pinned(const TopologyGraph& gt, const TopologyGraph& map, const std::vector<
     return n;
 }
 
-/** The map vertices of `pairs` (pivot pairs), each once, in order. */
-std::vector<int> mapVerticesOf(const std::vector<std::pair<int, int>>& pairs)
-{
-    std::vector<int> out;
-    for (const auto& pr : pairs) out.push_back(pr.first);
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
-}
-
 /** The part the best of `best` (distinct placements, best first) is, when it puts at least
  * min_share of the region on a wall and the runner-up at most max_runner_up of that: the walls
  * single it out. When a rival's walls come closer, the vertices may: the best is clear when it
@@ -386,8 +376,8 @@ std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph&
     const WallPartRule& pr = rule.part;
     const double cell = std::max(map.map.resolution_m, 1e-6);
     std::vector<Eigen::Vector2d> scored = evenlyThinned(rest, kScoredPoints);
-    std::vector<std::pair<int, int>> pivots =
-        pivotPairs(pivotsNear(map, scored, map_free), gt_pivots, max_map_pivots);
+    std::vector<int> near = pivotsNear(map, scored, map_free);
+    std::vector<std::pair<int, int>> pivots = pivotPairs(near, gt_pivots, max_map_pivots);
     if (pivots.empty()) return std::nullopt;
     const std::vector<Placement> first =
         bestPlacements(gt, map, gt_walls, reference, evenlyThinned(rest, kIcpPoints), scored,
@@ -401,10 +391,11 @@ std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph&
     const Eigen::Vector2d centre = centreOf(region);
     // Its own pivots (else the rest's: with none its rivals would go untried, and any
     // placement look clear).
-    if (std::vector<std::pair<int, int>> own =
-            pivotPairs(pivotsNear(map, scored, map_free), gt_pivots, max_map_pivots);
-        !own.empty())
-        pivots = std::move(own);
+    if (std::vector<int> own = pivotsNear(map, scored, map_free); !own.empty())
+    {
+        near = std::move(own);
+        pivots = pivotPairs(near, gt_pivots, max_map_pivots);
+    }
     std::vector<Placement> found =
         bestPlacements(gt, map, gt_walls, reference, evenlyThinned(region, kIcpPoints), scored,
                        scored, centre, pivots, res, pr);
@@ -412,10 +403,9 @@ std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph&
     found.push_back({shareOn(gt_walls, scored, t, pr.tolerance_m), t});
     std::stable_sort(found.begin(), found.end(),
                      [](const Placement& a, const Placement& b) { return a.share > b.share; });
-    const std::vector<int> own_vertices = mapVerticesOf(pivots);
     return clearPart(distinct(found, kRefined, centre), scored, pr,
                      [&](const Transform2D& x)
-                     { return pinned(gt, map, own_vertices, gt_pivots, x, pr.pair_distance_m); });
+                     { return pinned(gt, map, near, gt_pivots, x, pr.pair_distance_m); });
 }
 
 /** The places on the ground truth's walls that parts of the map stand on: one place of the
@@ -542,18 +532,16 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
         if (placed_already) continue;
         // Its pivots: free map vertices whose clearance (+ a margin) reaches the region.
         // (All of them: a region's few, unlike a whole map's.)
+        const std::vector<int> near = pivotsNear(placed, scored, map_free);
         const std::vector<std::pair<int, int>> pairs =
-            pivotPairs(pivotsNear(placed, scored, map_free), gt_pivots,
-                       std::numeric_limits<std::size_t>::max());
+            pivotPairs(near, gt_pivots, std::numeric_limits<std::size_t>::max());
         if (pairs.empty()) continue;
         const std::vector<Placement> best = bestPlacements(
             gt, placed, gt_walls, reference, region, scored, scored, centre, pairs, res, rule);
-        const std::vector<int> region_vertices = mapVerticesOf(pairs);
-        if (std::optional<WallPart> clear = clearPart(
-                best, scored, rule,
-                [&](const Transform2D& x) {
-                    return pinned(gt, placed, region_vertices, gt_pivots, x, rule.pair_distance_m);
-                }))
+        if (std::optional<WallPart> clear =
+                clearPart(best, scored, rule,
+                          [&](const Transform2D& x)
+                          { return pinned(gt, placed, near, gt_pivots, x, rule.pair_distance_m); }))
         {
             keep(std::move(*clear), false);
             continue;
