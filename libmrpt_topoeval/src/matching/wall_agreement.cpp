@@ -24,6 +24,11 @@ constexpr double kBucketMargin = 1e-3;
 constexpr long kReachCells = 4;
 /** A cell's flags: it holds a wall point; a wall point lies within kReachCells of it. */
 constexpr std::uint8_t kHeld = 1, kReach = 2;
+/** The kReach flags are marked once a radius's searches outnumber this share of its cells:
+ * marking costs a few operations per cell, a search tens of ns (brokenness step 9's placement
+ * search asks 10^7-10^8 points at one radius; a compare that never enters it, a few thousand,
+ * and the flags of the Intel reference's 0.7 M cells cost 3 ms of its 85). */
+constexpr std::size_t kReachAfter = 8;
 /** around()'s buckets [m]: a vertex's clearance + margin (1-3 m) spans a few of them. */
 constexpr double kAroundBucket_m = 0.5;
 /** The walls compared for the share: a few hundred points give a mean to a few percent. */
@@ -95,7 +100,36 @@ void WallIndex::fill(Buckets& b, double size) const
     }
 }
 
-const WallIndex::Cells& WallIndex::cellsFor(double r) const
+void WallIndex::markReach(Cells& c)
+{
+    // The held cells grown by kReachCells along x, then along y (a square window): one byte
+    // per cell, read once per query.
+    const long nx = c.nx, ny = c.ny;
+    std::vector<std::uint8_t> along_x(c.held.size(), 0);
+    for (long y = 0; y < ny; ++y)
+    {
+        long last = -kReachCells - 1;  // the last held cell of the row at x + k or left
+        const std::uint8_t* row = &c.held[std::size_t(y * nx)];
+        for (long x = -kReachCells; x < nx; ++x)
+        {
+            if (x + kReachCells < nx && (row[x + kReachCells] & kHeld)) last = x + kReachCells;
+            if (x >= 0 && last >= x - kReachCells) along_x[std::size_t(y * nx + x)] = 1;
+        }
+    }
+    for (long x = 0; x < nx; ++x)
+    {
+        long last = -kReachCells - 1;
+        for (long y = -kReachCells; y < ny; ++y)
+        {
+            if (y + kReachCells < ny && along_x[std::size_t((y + kReachCells) * nx + x)])
+                last = y + kReachCells;
+            if (y >= 0 && last >= y - kReachCells) c.held[std::size_t(y * nx + x)] |= kReach;
+        }
+    }
+    c.reach_marked = true;
+}
+
+WallIndex::Cells& WallIndex::cellsFor(double r) const
 {
     if (m_last_cells && r == m_last_r) return *m_last_cells;
     const auto [at, fresh] = m_cells.try_emplace(r);
@@ -121,29 +155,6 @@ const WallIndex::Cells& WallIndex::cellsFor(double r) const
             const long iy = std::min(ny - 1, long((ys[i] - c.origin.y()) / size));
             c.held[std::size_t(iy * nx + ix)] = kHeld;
         }
-        // The held cells grown by kReachCells along x, then along y (a square window): one
-        // byte per cell, read once per query.
-        std::vector<std::uint8_t> along_x(c.held.size(), 0);
-        for (long y = 0; y < ny; ++y)
-        {
-            long last = -kReachCells - 1;  // the last held cell of the row at x + k or left
-            const std::uint8_t* row = &c.held[std::size_t(y * nx)];
-            for (long x = -kReachCells; x < nx; ++x)
-            {
-                if (x + kReachCells < nx && row[x + kReachCells]) last = x + kReachCells;
-                if (x >= 0 && last >= x - kReachCells) along_x[std::size_t(y * nx + x)] = 1;
-            }
-        }
-        for (long x = 0; x < nx; ++x)
-        {
-            long last = -kReachCells - 1;
-            for (long y = -kReachCells; y < ny; ++y)
-            {
-                if (y + kReachCells < ny && along_x[std::size_t((y + kReachCells) * nx + x)])
-                    last = y + kReachCells;
-                if (y >= 0 && last >= y - kReachCells) c.held[std::size_t(y * nx + x)] |= kReach;
-            }
-        }
     }
     // A point within r (in the KD-tree's floats, which may stretch r by a few parts in 10^7)
     // is less than a bucket away along each axis.
@@ -154,7 +165,7 @@ const WallIndex::Cells& WallIndex::cellsFor(double r) const
 bool WallIndex::near(const Eigen::Vector2d& p, double r) const
 {
     if (empty()) return false;
-    const Cells& c = cellsFor(r);
+    Cells& c = cellsFor(r);
     if (!c.held.empty())
     {
         const double fx = (p.x() - c.origin.x()) / c.size, fy = (p.y() - c.origin.y()) / c.size;
@@ -162,7 +173,12 @@ bool WallIndex::near(const Eigen::Vector2d& p, double r) const
         {
             const std::uint8_t cell = c.held[std::size_t(long(fy) * c.nx + long(fx))];
             if (cell & kHeld) return true;
-            if (!(cell & kReach)) return false;
+            if (c.reach_marked)
+            {
+                if (!(cell & kReach)) return false;
+            }
+            else if (++c.searched > c.held.size() / kReachAfter)
+                markReach(c);  // this query still searches
         }
     }
     // The query as the KD-tree takes it.

@@ -82,22 +82,26 @@ private:
      * a cell lies within r / 2 of it, so near() answers without a search. Elsewhere the
      * buckets, a little over r wide, decide: a point within r lies in p's bucket or one of its
      * 8 neighbours. Made once per r (a wall agreement asks it of hundreds of points, each
-     * under nine shifts of the fit). A cell also knows whether a held cell lies within
-     * kReachCells of it (where a wall point within r of p lies); a point in a cell that is not
-     * has no wall point within r, also answered without a search. */
+     * under nine shifts of the fit). Once many points have been searched at r, a cell also
+     * knows whether a held cell lies within kReachCells of it (where a wall point within r of
+     * p lies); a point in a cell that is not has no wall point within r, also answered without
+     * a search. */
     struct Cells  // none held: too many cells for r
     {
         double size = 0.0;
         Eigen::Vector2d origin{0.0, 0.0};
         long nx = 0, ny = 0;
         std::vector<std::uint8_t> held;  //!< kHeld | kReach flags per cell
+        bool reach_marked = false;       //!< the kReach flags are set (markReach())
+        std::size_t searched = 0;        //!< points searched at r before they were
         Buckets buckets;
     };
     mutable std::map<double, Cells> m_cells;
     /** The last r asked and its cells: one agreement asks near() hundreds of times at one r. */
     mutable double m_last_r = 0.0;
-    mutable const Cells* m_last_cells = nullptr;
-    const Cells& cellsFor(double r) const;
+    mutable Cells* m_last_cells = nullptr;
+    Cells& cellsFor(double r) const;
+    static void markReach(Cells& c);
     /** For around(): buckets of a fixed size (a vertex's radius spans a few of them). */
     mutable std::optional<Buckets> m_around_buckets;
 };
