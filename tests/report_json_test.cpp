@@ -76,7 +76,7 @@ QualityReport tinyReport()
                            {"long", 9.0, kInf, 1, 0.25, 0.5}};
     r.brokenness.degree = 1;
     r.brokenness.score = 0.5;
-    r.brokenness.groups = {{{2, 0, 1}, 0.0123456789, {0.1, -0.2, -69.5}},
+    r.brokenness.groups = {{{2, 0, 1}, 0.0123456789, {0.1, -0.2, -69.5}, 0.0, false, {}},
                            {{3}, 0.2, {0.0, 0.0, 21.8}, 1.23456789, true, {2}}};
     r.explained_walls.measured = true;
     r.explained_walls.wall_points = 3;
