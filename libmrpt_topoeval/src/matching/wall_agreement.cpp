@@ -26,8 +26,8 @@ constexpr long kReachCells = 4;
 constexpr std::uint8_t kHeld = 1, kReach = 2;
 /** The kReach flags are marked once a radius's searches outnumber this share of its cells:
  * marking costs a few operations per cell, a search tens of ns (brokenness step 9's placement
- * search asks 10^7-10^8 points at one radius; a compare that never enters it, a few thousand,
- * and the flags of the Intel reference's 0.7 M cells cost 3 ms of its 85). */
+ * search asks 10^7-10^8 points at one radius; the Intel compare never enters it, and marked
+ * for every radius asked the flags cost it 3 ms of its 85). */
 constexpr std::size_t kReachAfter = 8;
 /** around()'s buckets [m]: a vertex's clearance + margin (1-3 m) spans a few of them. */
 constexpr double kAroundBucket_m = 0.5;
