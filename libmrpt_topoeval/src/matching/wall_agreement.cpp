@@ -47,6 +47,19 @@ float squaredDistance(float qx, float qy, float x, float y)
     d2 += dy * dy;
     return d2;
 }
+
+/** out(i) for each i in [0, n) with in(j) true for some j within kReachCells of i: one line of
+ * a square window's growth, one pass. */
+template <class In, class Out>
+void growLine(long n, In in, Out out)
+{
+    long last = -kReachCells - 1;  // the last j at i + k or before with in(j)
+    for (long i = -kReachCells; i < n; ++i)
+    {
+        if (i + kReachCells < n && in(i + kReachCells)) last = i + kReachCells;
+        if (i >= 0 && last >= i - kReachCells) out(i);
+    }
+}
 }  // namespace
 
 WallIndex::WallIndex(const std::vector<Eigen::Vector2f>& points)
@@ -105,27 +118,16 @@ void WallIndex::markReach(Cells& c)
     // The held cells grown by kReachCells along x, then along y (a square window): one byte
     // per cell, read once per query.
     const long nx = c.nx, ny = c.ny;
+    auto at = [nx](long x, long y) { return std::size_t(y * nx + x); };
     std::vector<std::uint8_t> along_x(c.held.size(), 0);
     for (long y = 0; y < ny; ++y)
-    {
-        long last = -kReachCells - 1;  // the last held cell of the row at x + k or left
-        const std::uint8_t* row = &c.held[std::size_t(y * nx)];
-        for (long x = -kReachCells; x < nx; ++x)
-        {
-            if (x + kReachCells < nx && (row[x + kReachCells] & kHeld)) last = x + kReachCells;
-            if (x >= 0 && last >= x - kReachCells) along_x[std::size_t(y * nx + x)] = 1;
-        }
-    }
+        growLine(
+            nx, [&](long x) { return (c.held[at(x, y)] & kHeld) != 0; },
+            [&](long x) { along_x[at(x, y)] = 1; });
     for (long x = 0; x < nx; ++x)
-    {
-        long last = -kReachCells - 1;
-        for (long y = -kReachCells; y < ny; ++y)
-        {
-            if (y + kReachCells < ny && along_x[std::size_t((y + kReachCells) * nx + x)])
-                last = y + kReachCells;
-            if (y >= 0 && last >= y - kReachCells) c.held[std::size_t(y * nx + x)] |= kReach;
-        }
-    }
+        growLine(
+            ny, [&](long y) { return along_x[at(x, y)] != 0; },
+            [&](long y) { c.held[at(x, y)] |= kReach; });
     c.reach_marked = true;
 }
 
