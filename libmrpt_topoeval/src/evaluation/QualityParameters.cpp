@@ -104,6 +104,9 @@ TOPOEVAL_PARAMETER_TABLE(
     integer(TOPOEVAL_KEY(wall_part_min_pin_lead), "1",
             "... or the best pinning this many vertices more than each closer rival (0 = off)",
             atLeast(0)),
+    flag(TOPOEVAL_KEY(wall_part_free_space),
+         "... or by share x its free space clear of walls, each rival's at most max_runner_up of "
+         "it"),
     real(TOPOEVAL_KEY(wall_part_turn_step_deg), "deg", "... turns tried before ICP",
          above(0).atMost(90)),
     real(TOPOEVAL_KEY(wall_part_pair_distance_m), "m",

@@ -705,6 +705,7 @@ internal::WallPartRule wallPartRule(const TopologyGraph& gt, const TopologyGraph
     rule.min_share = p.wall_part_min_share;
     rule.max_runner_up = p.wall_part_max_runner_up;
     rule.min_pin_lead = p.wall_part_min_pin_lead;
+    rule.free_space = p.wall_part_free_space;
     rule.turn_step_deg = p.wall_part_turn_step_deg;
     rule.pair_distance_m = p.wall_part_pair_distance_m;
     return rule;

@@ -269,26 +269,125 @@ int pinned(const TopologyGraph& gt, const TopologyGraph& map, const std::vector<
     return n;
 }
 
+/** The map's free space around a region, as its Topology Graph sees it: the clearance discs
+ * along its edges (the medial axis and its clearance are the free space, as a medial axis
+ * transform), sampled a cell apart, those whose disc reaches the region (its clearance + 2
+ * cells), at most kScoredPoints evenly thinned. A placement of the region that puts a
+ * ground-truth wall inside such a disc (deeper than `slack`) puts the map's free space on a wall:
+ * a room turned half round has its doorway where the truth has a wall, a room slid onto a like
+ * room elsewhere a wall through its middle. The discs are gathered when first asked for: only
+ * a region its walls leave in doubt needs them. */
+class FreeSpace
+{
+public:
+    FreeSpace(const TopologyGraph& map, const std::vector<Eigen::Vector2d>& region, double slack)
+        : m_map(map), m_region(region), m_slack(slack)
+    {
+    }
+    /** The share of the discs that `t` puts clear of every ground-truth wall (but `slack`);
+     * 0 when the graph has no disc at the region. */
+    double share(const WallIndex& gt_walls, const Transform2D& t) const
+    {
+        if (!m_gathered) gather();
+        std::size_t clear = 0;
+        for (std::size_t i = 0; i < m_at.size(); ++i)
+            clear += gt_walls.near(t.apply(m_at[i]), m_clearance[i] - m_slack) ? 0 : 1;
+        return m_at.empty() ? 0.0 : double(clear) / double(m_at.size());
+    }
+
+private:
+    void gather() const
+    {
+        m_gathered = true;
+        const TopologyGraph& map = m_map;
+        const std::vector<Eigen::Vector2d>& region = m_region;
+        const double slack = m_slack;
+        if (region.empty()) return;
+        const double cell = std::max(map.map.resolution_m, 1e-6);
+        Eigen::Vector2d lo = region.front(), hi = region.front();
+        for (const auto& q : region) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+        std::vector<Eigen::Vector2d> at;
+        std::vector<double> clearance;
+        auto sample = [&](const Eigen::Vector2d& p, double c)
+        {
+            const double reach = c + 2.0 * cell;
+            if (c <= slack || (p.array() < lo.array() - reach).any() ||
+                (p.array() > hi.array() + reach).any())
+                return;
+            for (const auto& q : region)
+                if ((q - p).squaredNorm() <= reach * reach)
+                {
+                    at.push_back(p), clearance.push_back(c);
+                    return;
+                }
+        };
+        for (const auto& e : map.edges)
+        {
+            if (e.path_m.empty() || e.clearance_m.size() != e.path_m.size()) continue;
+            sample(e.path_m.front(), e.clearance_m.front());
+            for (std::size_t i = 1; i < e.path_m.size(); ++i)
+            {
+                // A simplified path's points are metres apart; the clearance between two of
+                // them is taken as linear.
+                const Eigen::Vector2d a = e.path_m[i - 1], b = e.path_m[i];
+                const int steps = std::max(1, int(std::ceil((b - a).norm() / cell)));
+                for (int k = 1; k <= steps; ++k)
+                {
+                    const double f = double(k) / double(steps);
+                    sample(a + f * (b - a),
+                           (1.0 - f) * e.clearance_m[i - 1] + f * e.clearance_m[i]);
+                }
+            }
+        }
+        for (std::size_t k = 0, n = std::min(at.size(), kScoredPoints); k < n; ++k)
+        {
+            const std::size_t i = k * at.size() / n;
+            m_at.push_back(at[i]), m_clearance.push_back(clearance[i]);
+        }
+    }
+    const TopologyGraph& m_map;
+    const std::vector<Eigen::Vector2d>& m_region;
+    double m_slack;
+    mutable bool m_gathered = false;
+    mutable std::vector<Eigen::Vector2d> m_at;
+    mutable std::vector<double> m_clearance;
+};
+
 /** The part the best of `best` (distinct placements, best first) is, when it puts at least
  * min_share of the region on a wall and the runner-up at most max_runner_up of that: the walls
  * single it out. When a rival's walls come closer, the vertices may: the best is clear when it
  * pins (`pins`) at least min_pin_lead more of the region's vertices than every rival within
- * the walls' doubt (a corridor slid by a door's spacing keeps its walls and pins fewer). `scored`
- * its region's points. */
-template <class Pins>
+ * the walls' doubt (a corridor slid by a door's spacing keeps its walls and pins fewer). Or the
+ * free space may: the best is clear when its share times its free share (`free`, FreeSpace)
+ * exceeds every rival's by the same ratio as the walls ask. `scored` its region's points. */
+template <class Pins, class Free>
 std::optional<WallPart> clearPart(const std::vector<Placement>& best,
                                   const std::vector<Eigen::Vector2d>& scored,
-                                  const WallPartRule& rule, Pins pins)
+                                  const WallPartRule& rule, Pins pins, Free free)
 {
     if (best.empty() || best[0].share < rule.min_share) return std::nullopt;
     const double doubt = rule.max_runner_up * best[0].share;
-    if (best.size() > 1 && best[1].share > doubt)
+    auto byPins = [&]
     {
-        if (rule.min_pin_lead <= 0) return std::nullopt;
+        if (rule.min_pin_lead <= 0) return false;
         const int own = pins(best[0].t);
         for (std::size_t k = 1; k < best.size() && best[k].share > doubt; ++k)
-            if (own - pins(best[k].t) < rule.min_pin_lead) return std::nullopt;
-    }
+            if (own - pins(best[k].t) < rule.min_pin_lead) return false;
+        return true;
+    };
+    auto byFreeSpace = [&]
+    {
+        if (!rule.free_space) return false;
+        const double own = best[0].share * free(best[0].t);
+        const double free_doubt = rule.max_runner_up * own;
+        if (own <= 0.0) return false;
+        // The list is by share: a rival at most the doubt by its walls alone is below it.
+        for (std::size_t k = 1; k < best.size() && best[k].share > free_doubt; ++k)
+            if (best[k].share * free(best[k].t) > free_doubt) return false;
+        return true;
+    };
+    if (best.size() > 1 && best[1].share > doubt && !byPins() && !byFreeSpace())
+        return std::nullopt;
     WallPart part;
     part.transform = best[0].t;
     part.points = scored;
@@ -403,9 +502,12 @@ std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph&
     found.push_back({shareOn(gt_walls, scored, t, pr.tolerance_m), t});
     std::stable_sort(found.begin(), found.end(),
                      [](const Placement& a, const Placement& b) { return a.share > b.share; });
-    return clearPart(distinct(found, kRefined, centre), scored, pr,
-                     [&](const Transform2D& x)
-                     { return pinned(gt, map, near, gt_pivots, x, pr.pair_distance_m); });
+    const FreeSpace free_space(map, scored, pr.tolerance_m);
+    return clearPart(
+        distinct(found, kRefined, centre), scored, pr,
+        [&](const Transform2D& x)
+        { return pinned(gt, map, near, gt_pivots, x, pr.pair_distance_m); },
+        [&](const Transform2D& x) { return free_space.share(gt_walls, x); });
 }
 
 /** The places on the ground truth's walls that parts of the map stand on: one place of the
@@ -538,10 +640,12 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
         if (pairs.empty()) continue;
         const std::vector<Placement> best = bestPlacements(
             gt, placed, gt_walls, reference, region, scored, scored, centre, pairs, res, rule);
-        if (std::optional<WallPart> clear =
-                clearPart(best, scored, rule,
-                          [&](const Transform2D& x)
-                          { return pinned(gt, placed, near, gt_pivots, x, rule.pair_distance_m); }))
+        const FreeSpace free_space(placed, scored, rule.tolerance_m);
+        if (std::optional<WallPart> clear = clearPart(
+                best, scored, rule,
+                [&](const Transform2D& x)
+                { return pinned(gt, placed, near, gt_pivots, x, rule.pair_distance_m); },
+                [&](const Transform2D& x) { return free_space.share(gt_walls, x); }))
         {
             keep(std::move(*clear), false);
             continue;

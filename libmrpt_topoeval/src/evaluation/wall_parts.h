@@ -25,6 +25,7 @@ struct WallPartRule
     double min_share = 0.95;       //!< the placement's share of points on a wall
     double max_runner_up = 0.8;    //!< the next distinct placement's share / the best's
     int min_pin_lead = 2;          //!< or the best's pinned vertices minus each closer rival's
+    bool free_space = true;        //!< or the best's walls x free space against each rival's
     double turn_step_deg = 3.0;    //!< the turns tried before ICP
     double pair_distance_m = 0.5;  //!< a placed ground-truth vertex's map vertex
 };

@@ -186,6 +186,15 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
      * right on the standard corpus, floorplan_Freiburg79_scan/broken_3; doc/validation.md,
      * "Session 46"). 0 = walls alone [vertices]. */
     int wall_part_min_pin_lead = 2;
+    /** ... or, when a rival comes closer, the best is clear by its walls and its free space
+     * together: each placement's share of walls on walls times the share of the map's free
+     * space around the region (the clearance discs along its Topology Graph's edges, the medial
+     * axis's own picture of the free space) that holds no ground-truth wall, the rivals' at
+     * most wall_part_max_runner_up of the best's. Walls on walls cannot tell a room from the
+     * same room turned half round, or from a like room elsewhere; a wall across its doorway or
+     * through its middle can (doc/quality.md, brokenness step 9). false = walls and vertices
+     * alone. */
+    bool wall_part_free_space = true;
     /** ... placements tried at turns this far apart before ICP refines the best [deg]. */
     double wall_part_turn_step_deg = 3.0;
     /** ... the part's pairs: free ground-truth vertices it puts this near a free map vertex,
