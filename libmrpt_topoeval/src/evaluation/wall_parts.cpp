@@ -276,7 +276,8 @@ int pinned(const TopologyGraph& gt, const TopologyGraph& map, const std::vector<
  * ground-truth wall inside such a disc (deeper than `slack`) puts the map's free space on a wall:
  * a room turned half round has its doorway where the truth has a wall, a room slid onto a like
  * room elsewhere a wall through its middle. The discs are gathered when first asked for: only
- * a region its walls leave in doubt needs them. */
+ * a region its walls leave in doubt needs them. A local helper: it holds references to the
+ * graph and the region, which outlive it where it is used. */
 class FreeSpace
 {
 public:
@@ -299,11 +300,9 @@ private:
     void gather() const
     {
         m_gathered = true;
-        const TopologyGraph& map = m_map;
         const std::vector<Eigen::Vector2d>& region = m_region;
-        const double slack = m_slack;
         if (region.empty()) return;
-        const double cell = std::max(map.map.resolution_m, 1e-6);
+        const double cell = std::max(m_map.map.resolution_m, 1e-6);
         Eigen::Vector2d lo = region.front(), hi = region.front();
         for (const auto& q : region) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
         std::vector<Eigen::Vector2d> at;
@@ -311,7 +310,7 @@ private:
         auto sample = [&](const Eigen::Vector2d& p, double c)
         {
             const double reach = c + 2.0 * cell;
-            if (c <= slack || (p.array() < lo.array() - reach).any() ||
+            if (c <= m_slack || (p.array() < lo.array() - reach).any() ||
                 (p.array() > hi.array() + reach).any())
                 return;
             for (const auto& q : region)
@@ -321,7 +320,7 @@ private:
                     return;
                 }
         };
-        for (const auto& e : map.edges)
+        for (const auto& e : m_map.edges)
         {
             if (e.path_m.empty() || e.clearance_m.size() != e.path_m.size()) continue;
             sample(e.path_m.front(), e.clearance_m.front());
@@ -358,12 +357,12 @@ private:
  * single it out. When a rival's walls come closer, the vertices may: the best is clear when it
  * pins (`pins`) at least min_pin_lead more of the region's vertices than every rival within
  * the walls' doubt (a corridor slid by a door's spacing keeps its walls and pins fewer). Or the
- * free space may: the best is clear when its share times its free share (`free`, FreeSpace)
+ * free space may: the best is clear when its share times its free share (`free_share`, FreeSpace)
  * exceeds every rival's by the same ratio as the walls ask. `scored` its region's points. */
 template <class Pins, class Free>
 std::optional<WallPart> clearPart(const std::vector<Placement>& best,
                                   const std::vector<Eigen::Vector2d>& scored,
-                                  const WallPartRule& rule, Pins pins, Free free)
+                                  const WallPartRule& rule, Pins pins, Free free_share)
 {
     if (best.empty() || best[0].share < rule.min_share) return std::nullopt;
     const double doubt = rule.max_runner_up * best[0].share;
@@ -378,12 +377,12 @@ std::optional<WallPart> clearPart(const std::vector<Placement>& best,
     auto byFreeSpace = [&]
     {
         if (!rule.free_space) return false;
-        const double own = best[0].share * free(best[0].t);
+        const double own = best[0].share * free_share(best[0].t);
         const double free_doubt = rule.max_runner_up * own;
         if (own <= 0.0) return false;
         // The list is by share: a rival at most the doubt by its walls alone is below it.
         for (std::size_t k = 1; k < best.size() && best[k].share > free_doubt; ++k)
-            if (best[k].share * free(best[k].t) > free_doubt) return false;
+            if (best[k].share * free_share(best[k].t) > free_doubt) return false;
         return true;
     };
     if (best.size() > 1 && best[1].share > doubt && !byPins() && !byFreeSpace())
