@@ -275,52 +275,32 @@ int pinned(const TopologyGraph& gt, const TopologyGraph& map, const std::vector<
  * cells), at most kScoredPoints evenly thinned. A placement of the region that puts a
  * ground-truth wall inside such a disc (deeper than `slack`) puts the map's free space on a wall:
  * a room turned half round has its doorway where the truth has a wall, a room slid onto a like
- * room elsewhere a wall through its middle. The discs are gathered when first asked for: only
- * a region its walls leave in doubt needs them. A local helper: it holds references to the
- * graph and the region, which outlive it where it is used. */
+ * room elsewhere a wall through its middle. */
 class FreeSpace
 {
 public:
     FreeSpace(const TopologyGraph& map, const std::vector<Eigen::Vector2d>& region, double slack)
-        : m_map(map), m_region(region), m_slack(slack)
+        : m_slack(slack)
     {
-    }
-    /** The share of the discs that `t` puts clear of every ground-truth wall (but `slack`);
-     * 0 when the graph has no disc at the region. */
-    double share(const WallIndex& gt_walls, const Transform2D& t) const
-    {
-        if (!m_gathered) gather();
-        std::size_t clear = 0;
-        for (std::size_t i = 0; i < m_at.size(); ++i)
-            clear += gt_walls.near(t.apply(m_at[i]), m_clearance[i] - m_slack) ? 0 : 1;
-        return m_at.empty() ? 0.0 : double(clear) / double(m_at.size());
-    }
-
-private:
-    void gather() const
-    {
-        m_gathered = true;
-        const std::vector<Eigen::Vector2d>& region = m_region;
         if (region.empty()) return;
-        const double cell = std::max(m_map.map.resolution_m, 1e-6);
+        const double cell = std::max(map.map.resolution_m, 1e-6);
         Eigen::Vector2d lo = region.front(), hi = region.front();
         for (const auto& q : region) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
-        std::vector<Eigen::Vector2d> at;
-        std::vector<double> clearance;
+        std::vector<Disc> discs;
         auto sample = [&](const Eigen::Vector2d& p, double c)
         {
             const double reach = c + 2.0 * cell;
-            if (c <= m_slack || (p.array() < lo.array() - reach).any() ||
+            if (c <= slack || (p.array() < lo.array() - reach).any() ||
                 (p.array() > hi.array() + reach).any())
                 return;
             for (const auto& q : region)
                 if ((q - p).squaredNorm() <= reach * reach)
                 {
-                    at.push_back(p), clearance.push_back(c);
+                    discs.push_back({p, c});
                     return;
                 }
         };
-        for (const auto& e : m_map.edges)
+        for (const auto& e : map.edges)
         {
             if (e.path_m.empty() || e.clearance_m.size() != e.path_m.size()) continue;
             sample(e.path_m.front(), e.clearance_m.front());
@@ -338,37 +318,59 @@ private:
                 }
             }
         }
-        for (std::size_t k = 0, n = std::min(at.size(), kScoredPoints); k < n; ++k)
-        {
-            const std::size_t i = k * at.size() / n;
-            m_at.push_back(at[i]), m_clearance.push_back(clearance[i]);
-        }
+        m_discs = evenlyThinned(discs, kScoredPoints);
     }
-    const TopologyGraph& m_map;
-    const std::vector<Eigen::Vector2d>& m_region;
+    /** The share of the discs that `t` puts clear of every ground-truth wall (but `slack`);
+     * 0 when the graph has no disc at the region. */
+    double share(const WallIndex& gt_walls, const Transform2D& t) const
+    {
+        std::size_t clear = 0;
+        for (const Disc& d : m_discs)
+            clear += gt_walls.near(t.apply(d.centre), d.radius - m_slack) ? 0 : 1;
+        return m_discs.empty() ? 0.0 : double(clear) / double(m_discs.size());
+    }
+
+private:
+    struct Disc
+    {
+        Eigen::Vector2d centre;
+        double radius;
+    };
     double m_slack;
-    mutable bool m_gathered = false;
-    mutable std::vector<Eigen::Vector2d> m_at;
-    mutable std::vector<double> m_clearance;
+    std::vector<Disc> m_discs;
+};
+
+/** What singles a region's placement out besides its walls: the region's free map vertices
+ * (`near`, pinned()'s), the free ground-truth vertices (`gt_pivots`) and the ground truth's
+ * walls, in `gt` and `map` (the map as brokenness placed it). */
+struct Evidence
+{
+    const TopologyGraph& gt;
+    const TopologyGraph& map;
+    const std::vector<int>& near;
+    const std::vector<int>& gt_pivots;
+    const WallIndex& gt_walls;
 };
 
 /** The part the best of `best` (distinct placements, best first) is, when it puts at least
  * min_share of the region on a wall and the runner-up at most max_runner_up of that: the walls
  * single it out. When a rival's walls come closer, the vertices may: the best is clear when it
- * pins (`pins`) at least min_pin_lead more of the region's vertices than every rival within
+ * pins (pinned()) at least min_pin_lead more of the region's vertices than every rival within
  * the walls' doubt (a corridor slid by a door's spacing keeps its walls and pins fewer). Or the
- * free space may: the best is clear when its share times its free share (`free_share`, FreeSpace)
- * exceeds every rival's by the same ratio as the walls ask. `scored` its region's points. */
-template <class Pins, class Free>
+ * free space may: the best is clear when its share times its free share (FreeSpace, gathered
+ * only then) exceeds every rival's by the same ratio as the walls ask. `scored` its region's
+ * points. */
 std::optional<WallPart> clearPart(const std::vector<Placement>& best,
                                   const std::vector<Eigen::Vector2d>& scored,
-                                  const WallPartRule& rule, Pins pins, Free free_share)
+                                  const WallPartRule& rule, const Evidence& ev)
 {
     if (best.empty() || best[0].share < rule.min_share) return std::nullopt;
     const double doubt = rule.max_runner_up * best[0].share;
     auto byPins = [&]
     {
         if (rule.min_pin_lead <= 0) return false;
+        auto pins = [&](const Transform2D& t)
+        { return pinned(ev.gt, ev.map, ev.near, ev.gt_pivots, t, rule.pair_distance_m); };
         const int own = pins(best[0].t);
         for (std::size_t k = 1; k < best.size() && best[k].share > doubt; ++k)
             if (own - pins(best[k].t) < rule.min_pin_lead) return false;
@@ -377,12 +379,13 @@ std::optional<WallPart> clearPart(const std::vector<Placement>& best,
     auto byFreeSpace = [&]
     {
         if (!rule.free_space) return false;
-        const double own = best[0].share * free_share(best[0].t);
+        const FreeSpace free_space(ev.map, scored, rule.tolerance_m);
+        const double own = best[0].share * free_space.share(ev.gt_walls, best[0].t);
         const double free_doubt = rule.max_runner_up * own;
         if (own <= 0.0) return false;
         // The list is by share: a rival at most the doubt by its walls alone is below it.
         for (std::size_t k = 1; k < best.size() && best[k].share > free_doubt; ++k)
-            if (best[k].share * free_share(best[k].t) > free_doubt) return false;
+            if (best[k].share * free_space.share(ev.gt_walls, best[k].t) > free_doubt) return false;
         return true;
     };
     if (best.size() > 1 && best[1].share > doubt && !byPins() && !byFreeSpace())
@@ -501,12 +504,8 @@ std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph&
     found.push_back({shareOn(gt_walls, scored, t, pr.tolerance_m), t});
     std::stable_sort(found.begin(), found.end(),
                      [](const Placement& a, const Placement& b) { return a.share > b.share; });
-    const FreeSpace free_space(map, scored, pr.tolerance_m);
-    return clearPart(
-        distinct(found, kRefined, centre), scored, pr,
-        [&](const Transform2D& x)
-        { return pinned(gt, map, near, gt_pivots, x, pr.pair_distance_m); },
-        [&](const Transform2D& x) { return free_space.share(gt_walls, x); });
+    return clearPart(distinct(found, kRefined, centre), scored, pr,
+                     {gt, map, near, gt_pivots, gt_walls});
 }
 
 /** The places on the ground truth's walls that parts of the map stand on: one place of the
@@ -639,12 +638,8 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
         if (pairs.empty()) continue;
         const std::vector<Placement> best = bestPlacements(
             gt, placed, gt_walls, reference, region, scored, scored, centre, pairs, res, rule);
-        const FreeSpace free_space(placed, scored, rule.tolerance_m);
-        if (std::optional<WallPart> clear = clearPart(
-                best, scored, rule,
-                [&](const Transform2D& x)
-                { return pinned(gt, placed, near, gt_pivots, x, rule.pair_distance_m); },
-                [&](const Transform2D& x) { return free_space.share(gt_walls, x); }))
+        if (std::optional<WallPart> clear =
+                clearPart(best, scored, rule, {gt, placed, near, gt_pivots, gt_walls}))
         {
             keep(std::move(*clear), false);
             continue;

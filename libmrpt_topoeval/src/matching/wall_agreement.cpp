@@ -280,14 +280,6 @@ const std::vector<Eigen::Vector2d>& WallIndex::aroundVertices(const TopologyGrap
     return pts;
 }
 
-std::vector<Eigen::Vector2d> evenlyThinned(const std::vector<Eigen::Vector2d>& pts, std::size_t n)
-{
-    if (pts.size() <= n) return pts;
-    std::vector<Eigen::Vector2d> thin;
-    for (std::size_t k = 0; k < n; ++k) thin.push_back(pts[k * pts.size() / n]);
-    return thin;
-}
-
 WallAgreement wallAgreement(const TopologyGraph& gt, const TopologyGraph& map,
                             const WallIndex& gt_walls, const WallIndex& map_walls,
                             const std::vector<std::pair<int, int>>& pairs,

@@ -160,7 +160,14 @@ std::optional<Transform2D> alignWallsByIcp(const TopologyGraph& gt, const Topolo
                                            double reach_m);
 
 /** `pts` evenly thinned to `n` points (every pts.size() / n-th, in order); all when no more. */
-std::vector<Eigen::Vector2d> evenlyThinned(const std::vector<Eigen::Vector2d>& pts, std::size_t n);
+template <class T>
+std::vector<T> evenlyThinned(const std::vector<T>& pts, std::size_t n)
+{
+    if (pts.size() <= n) return pts;
+    std::vector<T> thin;
+    for (std::size_t k = 0; k < n; ++k) thin.push_back(pts[k * pts.size() / n]);
+    return thin;
+}
 
 /** MRPT's CICP (classic, 60 iterations) of `cloud` (map wall points) onto `reference`
  * (ground-truth wall points) from `start` (map -> ground truth): its first matching distance
