@@ -1150,6 +1150,9 @@ Parameters rulesAlone()
     Parameters p;
     p.quality.wall_parts = false;
     p.quality.map_by_walls = false;
+    // The truth lists below name the vertices of the graphs as built when each rule was made,
+    // before session 48 kept a sealed room's short piece (doc/topology_graph.md).
+    p.graph.room_piece_min_length_m = p.graph.min_component_length_m;
     return p;
 }
 

@@ -260,6 +260,7 @@ TEST(GraphBuilder, AlphaShapeCutsTheOutside)
     GraphBuildStats st;
     GraphBuilderParameters largest;
     largest.min_component_length_m = std::numeric_limits<double>::infinity();
+    largest.room_piece_min_length_m = std::numeric_limits<double>::infinity();
     const TopologyGraph g = buildTopologyGraph(s.grid(), largest, &st);
     expectWellFormed(g);
     EXPECT_GT(st.vertices_after_prune, st.vertices_after_alpha);
@@ -619,11 +620,43 @@ TEST(GraphBuilder, EveryPieceOfAUsefulSizeIsKept)
 
     GraphBuilderParameters largest;
     largest.min_component_length_m = std::numeric_limits<double>::infinity();
+    largest.room_piece_min_length_m = std::numeric_limits<double>::infinity();
     const TopologyGraph one = buildTopologyGraph(s.grid(), largest);
     ASSERT_EQ(one.vertices.size(), 2u);
     for (const auto& v : one.vertices) EXPECT_LT(v.position_m.y(), 3.0);
     largest.min_component_length_m = 7.0;  // the short corridor's edge is ~6.5 m
     EXPECT_EQ(buildTopologyGraph(s.grid(), largest).vertices.size(), 2u);
+}
+
+TEST(GraphBuilder, ASealedRoomKeepsItsPiece)
+{
+    // A corridor; beside it a room 4 m x 7 m sealed off (its door closed, or cut by a crop or a
+    // break); east of it a free area of the same size bounded by the unknown (a laser fan seen
+    // through a door). Each skeleton is a piece of one edge, about 3 m once its corner spurs
+    // are pruned: under min_component_length_m. The room's runs between walls and is kept (a
+    // missed part can be placed by its vertices); the fan's faces the unknown and goes.
+    GridSketch s(16.0, 12.0);
+    s.carve(1.0, 1.0, 15.0, 2.5).carve(2.0, 4.0, 6.0, 11.0);
+    s.unknown(9.8, 3.8, 14.2, 11.2).carve(10.0, 4.0, 14.0, 11.0);
+    auto count = [](const TopologyGraph& g, double x0, double x1)
+    {
+        return std::count_if(
+            g.vertices.begin(), g.vertices.end(),
+            [&](const TopoVertex& v)
+            { return v.position_m.y() > 3.5 && v.position_m.x() > x0 && v.position_m.x() < x1; });
+    };
+    const TopologyGraph g = buildTopologyGraph(s.grid());
+    expectWellFormed(g);
+    EXPECT_EQ(count(g, 1.0, 7.0), 2);   // the room
+    EXPECT_EQ(count(g, 9.0, 15.0), 0);  // the fan
+    EXPECT_EQ(g.vertices.size(), 4u);
+
+    // Before session 48 the room went too; with no wall share asked, the fan stays.
+    GraphBuilderParameters no_rooms, any_piece;
+    no_rooms.room_piece_min_length_m = no_rooms.min_component_length_m;
+    EXPECT_EQ(count(buildTopologyGraph(s.grid(), no_rooms), 1.0, 7.0), 0);
+    any_piece.room_piece_min_wall_share = 0.0;
+    EXPECT_EQ(count(buildTopologyGraph(s.grid(), any_piece), 9.0, 15.0), 2);
 }
 
 TEST(GraphBuilder, RotatedFloorPlanOnABlackPageKeepsItsGraph)
@@ -865,6 +898,7 @@ TEST(GraphBuilder, AlphaCutSparesACroppedMapsInside)
     const auto [gt, map] = corpusCase("cropped_hall", "column_hall_1002_crop_0.75");
     GraphBuilderParameters session28;
     session28.alpha_page_max_edge_unknown = 1.0;
+    session28.room_piece_min_length_m = session28.min_component_length_m;  // none then
     const TopologyGraph g = buildTopologyGraph(map);
     expectWellFormed(g);
     EXPECT_EQ(g.vertices.size(), 38u);

@@ -59,6 +59,12 @@ TOPOEVAL_PARAMETER_TABLE(
          "keep every connected part with at least this much edge length (and the "
          "longest)",
          atLeast(0).orInfinity()),
+    real(TOPOEVAL_KEY(room_piece_min_length_m), "m",
+         "... and every part with at least this much that is a room (its skeleton between walls)",
+         atLeast(0).orInfinity()),
+    real(TOPOEVAL_KEY(room_piece_min_wall_share), "ratio",
+         "... a room: this share of the obstacle cells nearest its skeleton are walls, not unknown",
+         atLeast(0).atMost(1)),
     real(TOPOEVAL_KEY(join_distance_m), "m", "merge vertices joined by an edge shorter than this",
          atLeast(0)),
     real(TOPOEVAL_KEY(edge_direction_distance_m), "m",

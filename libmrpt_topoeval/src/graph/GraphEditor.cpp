@@ -427,7 +427,9 @@ std::size_t GraphEditor::retractDeadEndTails(double share, double wedge_ratio)
     return moved;
 }
 
-void GraphEditor::keepComponents(double min_length)
+void GraphEditor::keepComponents(
+    double min_length, double min_room_length,
+    const std::function<bool(const std::vector<const Edge*>&)>& is_room)
 {
     const int nv = static_cast<int>(m_v.size());
     std::vector<int> comp(nv, -1);
@@ -476,9 +478,20 @@ void GraphEditor::keepComponents(double min_length)
                                       (x.vertices == y.vertices && lessPos(x.min_pos, y.min_pos)))))
             best = c;
     }
+    // A part under min_length but of min_room_length is kept when it is a room (its edges
+    // gathered in one pass, asked once).
+    const int nc = static_cast<int>(scores.size());
+    auto maybeRoom = [&](int c)
+    { return c != best && scores[c].length < min_length && scores[c].length >= min_room_length; };
+    std::vector<std::vector<const Edge*>> room_edges(nc);
+    for (const Edge& E : m_e)
+        if (E.alive && maybeRoom(comp[E.a])) room_edges[comp[E.a]].push_back(&E);
+    std::vector<char> keep(nc, 0);
+    for (int c = 0; c < nc; ++c)
+        keep[c] = c == best || scores[c].length >= min_length ||
+                  (maybeRoom(c) && is_room && is_room(room_edges[c]));
     for (int v = 0; v < nv; ++v)
-        if (m_v[v].alive && comp[v] != best && !(scores[comp[v]].length >= min_length))
-            removeVertex(v);
+        if (m_v[v].alive && !keep[comp[v]]) removeVertex(v);
     dissolveDegreeTwo();  // rebuilds the storage from what is alive
 }
 

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "skeleton/voronoi_cgal.h"
@@ -102,8 +103,10 @@ public:
 
     /** Keeps the connected part with the largest total edge length (ties: more vertices, then
      * the smallest position) and every other part whose total edge length is at least
-     * `min_length`, removing the rest. */
-    void keepComponents(double min_length);
+     * `min_length`, or at least `min_room_length` when `is_room` says so of its edges, removing
+     * the rest. */
+    void keepComponents(double min_length, double min_room_length,
+                        const std::function<bool(const std::vector<const Edge*>&)>& is_room);
 
     /** Merges the two ends of every non-loop edge shorter than `max_length` (transitively) into
      * one vertex at their mean position; the short edges disappear, longer edges inside a group

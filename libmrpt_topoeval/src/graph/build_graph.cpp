@@ -518,7 +518,8 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
         keep_enclosed
             ? freeReachingEdge(cls, w, h, ox, oy, sx, sy, params.alpha_page_max_edge_unknown)
             : std::vector<std::uint8_t>();
-    std::vector<std::uint8_t>().swap(cls);
+    // The cells stay for the components step (a room's walls); the sites go once the diagram
+    // is built.
     vin.min_clearance_cells = params.min_clearance_m / res;
     vin.alpha_radius_cells = params.alpha_radius_m / res;
     internal::VoronoiSkeleton vd = internal::computeVoronoiSkeleton(vin);
@@ -591,7 +592,35 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
     g.retractDeadEndTails(params.dead_end_tail_share, params.dead_end_tail_ratio);
     timer.lap("tails");
 
-    g.keepComponents(params.min_component_length_m / res);
+    // Ours (session 48): a short part whose skeleton runs between walls is a room sealed off
+    // (a closed door, a crop, a break's cut), kept; one facing the unknown is a laser fan's or
+    // the outside's fragment. The obstacle cells nearest each path point lie at its clearance:
+    // sampled in kRoomRays directions one cell beyond it.
+    auto isRoom = [&](const std::vector<const internal::GraphEditor::Edge*>& edges)
+    {
+        constexpr int kRoomRays = 16;
+        std::size_t walls = 0, unknown = 0;
+        for (const internal::GraphEditor::Edge* e : edges)
+            for (std::size_t i = 0; i < e->path.size(); ++i)
+            {
+                const double r = e->clearance[i] + 1.0;
+                for (int k = 0; k < kRoomRays; ++k)
+                {
+                    const double a = 2.0 * M_PI * k / kRoomRays;
+                    const long x = std::lround(e->path[i].x() + r * std::cos(a)) - ox;
+                    const long y = std::lround(e->path[i].y() + r * std::sin(a)) - oy;
+                    const std::uint8_t c = x < 0 || y < 0 || x >= w || y >= h
+                                               ? std::uint8_t(kUnknown)
+                                               : at(int(x), int(y));
+                    walls += c == kOccupied;
+                    unknown += c == kUnknown;
+                }
+            }
+        return double(walls) >= params.room_piece_min_wall_share * double(walls + unknown);
+    };
+    g.keepComponents(params.min_component_length_m / res, params.room_piece_min_length_m / res,
+                     isRoom);
+    std::vector<std::uint8_t>().swap(cls);
     stats.vertices_after_component = g.numAliveVertices();
     timer.lap("largest_component");
     snapshot("largest_component");

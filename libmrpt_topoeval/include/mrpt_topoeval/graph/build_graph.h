@@ -114,6 +114,16 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
      * can flip between two maps of one place. A large value keeps only the biggest, as the
      * paper does [m]. */
     double min_component_length_m = 5.0;
+    /** ... and a shorter part of at least this much edge length when it is a room: a room
+     * sealed off (a closed door, a crop, a break's cut) is a part of one edge, about its length
+     * minus its width (2-4 m), where laser-fan and outside fragments are parts too (session 48,
+     * doc/topology_graph.md). A value of min_component_length_m or more turns it off [m]. */
+    double room_piece_min_length_m = 2.0;
+    /** ... a room: at least this share of the obstacle cells nearest its skeleton are walls,
+     * not unknown: mostly walls (a room's door open onto the unknown is a small share of them;
+     * a laser fan is bounded by the unknown). Measured: sealed rooms 0.74-1.0, the Radish
+     * maps' fragments 0-0.31 [ratio]. */
+    double room_piece_min_wall_share = 0.5;
     /** Vertices joined by an edge shorter than this are merged into one vertex at their mean
      * position (paper II-B, last step) [m]. */
     double join_distance_m = 0.60;
