@@ -10,6 +10,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <set>
 
 #include "common/union_find.h"
 
@@ -53,6 +54,7 @@ struct Placement
 {
     double share = 0.0;
     Transform2D t;
+    int pivot = -1;  //!< The map vertex the coarse search put on a ground-truth vertex.
 };
 
 double shareOn(const WallIndex& gt_walls, const std::vector<Eigen::Vector2d>& pts,
@@ -200,7 +202,7 @@ std::vector<Placement> bestPlacements(
             const Eigen::Vector2d d = gt.vertices[size_t(g)].position_m -
                                       turn.apply(placed.vertices[size_t(m)].position_m);
             const Transform2D t{d.x(), d.y(), yaw};
-            coarse.push_back({shareOn(gt_walls, first_pts, t, rule.tolerance_m), t});
+            coarse.push_back({shareOn(gt_walls, first_pts, t, rule.tolerance_m), t, m});
         }
     }
     if (first_pts.size() < coarse_pts.size())
@@ -222,12 +224,18 @@ std::vector<Placement> bestPlacements(
             const Placement& c = coarse[order[prefix++]];
             if (distinctFrom(c.t, seen, centre)) seen.push_back(c);
         }
-        order.resize(prefix);
+        // Each map pivot's best goes on too (see the refined, below).
+        std::vector<std::size_t> kept(order.begin(), order.begin() + std::ptrdiff_t(prefix));
+        std::set<int> pivots_in;
+        for (std::size_t i : kept) pivots_in.insert(coarse[i].pivot);
+        for (std::size_t k = prefix; k < order.size(); ++k)
+            if (pivots_in.insert(coarse[order[k]].pivot).second) kept.push_back(order[k]);
+        order = std::move(kept);
         std::sort(order.begin(), order.end());
         std::vector<Placement> rescored;
         for (std::size_t i : order)
-            rescored.push_back(
-                {shareOn(gt_walls, coarse_pts, coarse[i].t, rule.tolerance_m), coarse[i].t});
+            rescored.push_back({shareOn(gt_walls, coarse_pts, coarse[i].t, rule.tolerance_m),
+                                coarse[i].t, coarse[i].pivot});
         coarse = std::move(rescored);
     }
     std::stable_sort(coarse.begin(), coarse.end(),
@@ -235,11 +243,22 @@ std::vector<Placement> bestPlacements(
     // Refined by ICP of the region's points onto the ground truth's walls.
     mrpt::maps::CSimplePointsMap cloud;
     for (const auto& q : region) cloud.insertPoint(float(q.x()), float(q.y()), 0.0f);
+    // The best kRefined distinct, and each map pivot's best: more pivots (a region near more
+    // free vertices) must not crowd a pivot's only good placement out of the few refined
+    // (held-out house_9002/broken_1: a sealed room's two vertices, session 48).
+    std::vector<Placement> candidates = distinct(coarse, kRefined, centre);
+    std::set<int> pivots_done;
+    for (const Placement& c : coarse)  // best first
+        if (!pivots_done.count(c.pivot) && distinctFrom(c.t, candidates, centre))
+        {
+            pivots_done.insert(c.pivot);
+            candidates.push_back(c);
+        }
     std::vector<Placement> refined;
-    for (const Placement& c : distinct(coarse, kRefined, centre))
+    for (const Placement& c : candidates)
     {
         const Transform2D t = icpOfWalls(reference, cloud, c.t, res, kIcpReach);
-        refined.push_back({shareOn(gt_walls, scored, t, rule.tolerance_m), t});
+        refined.push_back({shareOn(gt_walls, scored, t, rule.tolerance_m), t, c.pivot});
     }
     std::stable_sort(refined.begin(), refined.end(),
                      [](const Placement& a, const Placement& b) { return a.share > b.share; });
