@@ -298,6 +298,35 @@ std::vector<std::uint8_t> freeReachingEdge(const std::vector<std::uint8_t>& cls,
     return mark;
 }
 
+// The share of the obstacle cells nearest a piece's skeleton (`edges`, in grid cells) that are
+// walls, not unknown (graph step 5: a room sealed off, or a laser fan's piece). They lie at each
+// path point's clearance: sampled in kRoomRays directions one cell beyond it; a ray that lands
+// on a free cell passes no obstacle that near. `cls` is the region (w x h cells at ox, oy);
+// outside it is unknown.
+double wallShareAround(const std::vector<std::uint8_t>& cls, int w, int h, int ox, int oy,
+                       const std::vector<const internal::GraphEditor::Edge*>& edges)
+{
+    constexpr int kRoomRays = 16;
+    std::size_t walls = 0, unknown = 0;
+    for (const internal::GraphEditor::Edge* e : edges)
+        for (std::size_t i = 0; i < e->path.size(); ++i)
+        {
+            const double r = e->clearance[i] + 1.0;
+            for (int k = 0; k < kRoomRays; ++k)
+            {
+                const double a = 2.0 * M_PI * k / kRoomRays;
+                const long x = std::lround(e->path[i].x() + r * std::cos(a)) - ox;
+                const long y = std::lround(e->path[i].y() + r * std::sin(a)) - oy;
+                const std::uint8_t c = x < 0 || y < 0 || x >= w || y >= h
+                                           ? std::uint8_t(kUnknown)
+                                           : cls[static_cast<std::size_t>(y) * w + x];
+                walls += c == kOccupied;
+                unknown += c == kUnknown;
+            }
+        }
+    return walls + unknown == 0 ? 1.0 : double(walls) / double(walls + unknown);
+}
+
 // Islands: 8-connected components of non-free cells (occupied or unknown) surrounded by free
 // space, not touching the grid's edge, whose smallest enclosing circle (of the cells'
 // squares) is narrower than `min_size_cells`, become free. Returns how many were removed.
@@ -594,30 +623,9 @@ TopologyGraph buildTopologyGraph(const mrpt::maps::COccupancyGridMap2D& grid,
 
     // Ours (session 48): a short part whose skeleton runs between walls is a room sealed off
     // (a closed door, a crop, a break's cut), kept; one facing the unknown is a laser fan's or
-    // the outside's fragment. The obstacle cells nearest each path point lie at its clearance:
-    // sampled in kRoomRays directions one cell beyond it.
+    // the outside's fragment.
     auto isRoom = [&](const std::vector<const internal::GraphEditor::Edge*>& edges)
-    {
-        constexpr int kRoomRays = 16;
-        std::size_t walls = 0, unknown = 0;
-        for (const internal::GraphEditor::Edge* e : edges)
-            for (std::size_t i = 0; i < e->path.size(); ++i)
-            {
-                const double r = e->clearance[i] + 1.0;
-                for (int k = 0; k < kRoomRays; ++k)
-                {
-                    const double a = 2.0 * M_PI * k / kRoomRays;
-                    const long x = std::lround(e->path[i].x() + r * std::cos(a)) - ox;
-                    const long y = std::lround(e->path[i].y() + r * std::sin(a)) - oy;
-                    const std::uint8_t c = x < 0 || y < 0 || x >= w || y >= h
-                                               ? std::uint8_t(kUnknown)
-                                               : at(int(x), int(y));
-                    walls += c == kOccupied;
-                    unknown += c == kUnknown;
-                }
-            }
-        return double(walls) >= params.room_piece_min_wall_share * double(walls + unknown);
-    };
+    { return wallShareAround(cls, w, h, ox, oy, edges) >= params.room_piece_min_wall_share; };
     g.keepComponents(params.min_component_length_m / res, params.room_piece_min_length_m / res,
                      isRoom);
     std::vector<std::uint8_t>().swap(cls);

@@ -121,8 +121,8 @@ struct GraphBuilderParameters : public mrpt::config::CLoadableOptions
     double room_piece_min_length_m = 2.0;
     /** ... a room: at least this share of the obstacle cells nearest its skeleton are walls,
      * not unknown: mostly walls (a room's door open onto the unknown is a small share of them;
-     * a laser fan is bounded by the unknown). Measured: sealed rooms 0.74-1.0, the Radish
-     * maps' fragments 0-0.31 [ratio]. */
+     * a laser fan is bounded by the unknown). Measured: rooms 0.51-1.0 (0.51: a room a crop cut
+     * open, walls on three sides), the Radish maps' laser-fan pieces 0-0.31 [ratio]. */
     double room_piece_min_wall_share = 0.5;
     /** Vertices joined by an edge shorter than this are merged into one vertex at their mean
      * position (paper II-B, last step) [m]. */
