@@ -10,7 +10,6 @@
 #include <memory>
 #include <numeric>
 #include <optional>
-#include <set>
 
 #include "common/union_find.h"
 
@@ -224,12 +223,27 @@ std::vector<Placement> bestPlacements(
             const Placement& c = coarse[order[prefix++]];
             if (distinctFrom(c.t, seen, centre)) seen.push_back(c);
         }
-        // Each map pivot's best goes on too (see the refined, below).
+        // Each map pivot's best goes on too (see the refined, below); the rest of the order is
+        // walked only until every pivot has one (it holds up to 10^6 placements).
         std::vector<std::size_t> kept(order.begin(), order.begin() + std::ptrdiff_t(prefix));
-        std::set<int> pivots_in;
-        for (std::size_t i : kept) pivots_in.insert(coarse[i].pivot);
-        for (std::size_t k = prefix; k < order.size(); ++k)
-            if (pivots_in.insert(coarse[order[k]].pivot).second) kept.push_back(order[k]);
+        std::vector<char> is_pivot(placed.vertices.size(), 0), pivot_in(is_pivot);
+        for (const auto& pair : pivot_pairs) is_pivot[size_t(pair.first)] = 1;
+        const auto pivots = std::size_t(std::count(is_pivot.begin(), is_pivot.end(), 1));
+        std::size_t pivots_in = 0;
+        auto firstOfPivot = [&](std::size_t i)
+        {
+            char& in = pivot_in[size_t(coarse[i].pivot)];
+            if (in) return false;
+            in = 1;
+            return true;
+        };
+        for (std::size_t i : kept) pivots_in += firstOfPivot(i) ? 1 : 0;
+        for (std::size_t k = prefix; k < order.size() && pivots_in < pivots; ++k)
+            if (firstOfPivot(order[k]))
+            {
+                kept.push_back(order[k]);
+                ++pivots_in;
+            }
         order = std::move(kept);
         std::sort(order.begin(), order.end());
         std::vector<Placement> rescored;
@@ -247,11 +261,11 @@ std::vector<Placement> bestPlacements(
     // free vertices) must not crowd a pivot's only good placement out of the few refined
     // (held-out house_9002/broken_1: a sealed room's two vertices, session 48).
     std::vector<Placement> candidates = distinct(coarse, kRefined, centre);
-    std::set<int> pivots_done;
+    std::vector<char> pivot_done(placed.vertices.size(), 0);
     for (const Placement& c : coarse)  // best first
-        if (!pivots_done.count(c.pivot) && distinctFrom(c.t, candidates, centre))
+        if (!pivot_done[size_t(c.pivot)] && distinctFrom(c.t, candidates, centre))
         {
-            pivots_done.insert(c.pivot);
+            pivot_done[size_t(c.pivot)] = 1;
             candidates.push_back(c);
         }
     std::vector<Placement> refined;
@@ -400,8 +414,8 @@ std::optional<WallPart> clearPart(const std::vector<Placement>& best,
         if (!rule.free_space) return false;
         const FreeSpace free_space(ev.map, scored, rule.tolerance_m);
         const double own = best[0].share * free_space.share(ev.gt_walls, best[0].t);
-        const double free_doubt = rule.max_runner_up * own;
         if (own <= 0.0) return false;
+        const double free_doubt = rule.max_runner_up * own;
         // The list is by share: a rival at most the doubt by its walls alone is below it.
         for (std::size_t k = 1; k < best.size() && best[k].share > free_doubt; ++k)
             if (best[k].share * free_space.share(ev.gt_walls, best[k].t) > free_doubt) return false;
