@@ -1129,6 +1129,84 @@ TEST(QualityEvaluator, AMapTheMatchCannotGroupIsPlacedByItsWalls)
     }
 }
 
+// A robot map against its floor plan (map_by_walls_whole_min_share): furniture along every wall
+// leaves no 3 m neighbourhood of the map's walls on the plan's walls for 0.9 of it, so no part's
+// region is singled out; the whole map, whose best placement puts most of its walls on the plan
+// far ahead of every other, is one part. The known answer: the office with walls 0.1 m thick
+// and a dash of furniture 0.3 m off every wall each 2.25 m, moved by 30 degrees and (2, -1) m,
+// given to evaluateMatch() with no pair (as a flat's closed doors leave too few), is placed
+// where the move puts it (its best placement 0.80 of the walls, the next 0.46), no break, and
+// each pair its placement makes is a vertex the move puts within 1 m of its own.
+TEST(QualityEvaluator, ARobotMapWithNoCleanRegionIsPlacedWhole)
+{
+    const COccupancyGridMap2D plan = makeOfficeMap();
+    // Dashes 0.6 m x 0.15 m, 0.3 m (6 cells) from each wall face along the plan's axes, every
+    // 2.25 m (45 cells): wider than min_island_size_m, so they stay as a robot map's clutter.
+    COccupancyGridMap2D furnished = plan;
+    const int nx = int(plan.getSizeX()), ny = int(plan.getSizeY());
+    auto isFree = [&](int x, int y)
+    { return x >= 0 && y >= 0 && x < nx && y < ny && plan.getCell(x, y) > 0.5f; };
+    for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x)
+        {
+            if (!isFree(x, y)) continue;
+            for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
+            {
+                bool open = true;
+                for (int k = 1; k <= 5 && open; ++k) open = isFree(x + k * dx, y + k * dy);
+                const int x6 = x + 6 * dx, y6 = y + 6 * dy;
+                const bool wall = x6 >= 0 && y6 >= 0 && x6 < nx && y6 < ny && !isFree(x6, y6) &&
+                                  plan.getCell(x6, y6) < 0.5f;
+                const int along = dx != 0 ? y : x;
+                if (open && wall && along % 45 < 12)
+                    for (int t = 0; t < 3; ++t) furnished.setCell(x - t * dx, y - t * dy, 0.0f);
+            }
+        }
+    // As a robot sees walls: 0.1 m thick from the free space, unknown behind (the plan's solid
+    // mass would be a clean region of its own).
+    for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x)
+        {
+            bool near = false;
+            for (int dy = -2; dy <= 2 && !near; ++dy)
+                for (int dx = -2; dx <= 2 && !near; ++dx) near = isFree(x + dx, y + dy);
+            if (!near) furnished.setCell(x, y, 0.5f);
+        }
+    const double yaw = 30.0 * kDeg;
+    const Eigen::Vector2d shift(2.0, -1.0);
+    const COccupancyGridMap2D map = transformGrid(furnished, yaw, shift);
+    // As built (evaluate()'s clutter pass would free the dashes the match puts off the plan).
+    const TopologyGraph g = buildTopologyGraph(plan), m = buildTopologyGraph(map);
+
+    QualityParameters qp;
+    EXPECT_EQ(qp.map_by_walls_whole_min_share, 0.5);  // the default
+    qp.map_by_walls_whole_min_share = 0.0;
+    const QualityReport regions = evaluateMatch(g, m, GraphMatch{}, qp);
+    EXPECT_TRUE(regions.match.pairs.empty()) << "a region placed: the furniture is too sparse";
+    EXPECT_EQ(regions.quality, 0.0);
+
+    qp.map_by_walls_whole_min_share = 0.5;
+    const QualityReport r = evaluateMatch(g, m, GraphMatch{}, qp);
+    ASSERT_EQ(r.brokenness.groups.size(), 1u);
+    EXPECT_EQ(r.brokenness.degree, 0);
+    const Transform2D& t = r.brokenness.groups[0].transform;
+    for (const Eigen::Vector2d& p : {Eigen::Vector2d(5.0, 5.0), Eigen::Vector2d(25.0, 15.0)})
+        EXPECT_LT((t.apply(transformPoint(plan, yaw, shift, p)) - p).norm(), 0.1) << p.transpose();
+    ASSERT_GE(r.match.pairs.size(), 5u);
+    EXPECT_EQ(r.match.byWalls(), r.match.pairs.size());
+    for (const VertexPair& pr : r.match.pairs)
+    {
+        const Eigen::Vector2d& p = g.vertices[pr.ground_truth].position_m;
+        EXPECT_LT((transformPoint(plan, yaw, shift, p) - m.vertices[pr.map].position_m).norm(), 1.0)
+            << "gt " << pr.ground_truth << ", map " << pr.map;
+    }
+    EXPECT_GT(r.quality, 0.5);
+    bool said = false;
+    for (const std::string& s : r.messages)
+        said |= s.find("the whole map is one part") != std::string::npos;
+    EXPECT_TRUE(said);
+}
+
 // One place, one part (wall_part_max_overlap) in step 10: the house plan's west 60 % as the
 // ground truth, the whole plan as the map (a robot map that runs beyond its plan). Its graph
 // pairs too few vertices for a group, so the map is placed by its walls: its west part where it

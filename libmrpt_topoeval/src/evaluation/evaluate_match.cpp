@@ -724,6 +724,7 @@ internal::WallMapRule wallMapRule(const TopologyGraph& gt, const TopologyGraph& 
     rule.region_share = p.map_by_walls_region_share;
     rule.min_explained = p.map_by_walls_min_explained;
     rule.max_parts = p.map_by_walls_max_parts;
+    rule.whole_min_share = p.map_by_walls_whole_min_share;
     rule.slack_share = p.vertex_slack_share;
     rule.max_overlap = p.wall_part_max_overlap;
     return rule;
@@ -771,6 +772,15 @@ internal::WallMap mapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
                   100.0 * placed.explained, out.pairs.size(), rule.part.pair_distance_m,
                   100.0 * rule.slack_share);
     out.messages.push_back(note);
+    if (placed.whole)
+    {
+        std::snprintf(note, sizeof note,
+                      "no region of the map's walls is placed on its own: "
+                      "the whole map is one part, its best placement putting %.1f %% of its "
+                      "walls on the ground truth's, the next %.1f %%",
+                      100.0 * placed.whole_share, 100.0 * placed.whole_runner_up);
+        out.messages.push_back(note);
+    }
     return placed;
 }
 
@@ -829,6 +839,8 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     GraphMatch walls_match;
     int refused_by_walls = 0;  // parts found, too few to explain the map
     double refused_explained = 0.0;
+    bool whole_unpaired = false;  // placed whole, no vertex pair (its shares below)
+    double whole_share = 0.0, whole_runner_up = 0.0;
     if (p.map_by_walls && given.pairs.size() < std::size_t(p.brokenness_min_vertices) &&
         &map_for_brokenness == &map)
     {
@@ -837,6 +849,9 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
         {
             refused_by_walls = by_walls->parts_sought;
             refused_explained = by_walls->explained;
+            whole_unpaired = by_walls->whole;
+            whole_share = by_walls->whole_share;
+            whole_runner_up = by_walls->whole_runner_up;
             by_walls.reset();
         }
     }
@@ -872,6 +887,16 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
                       "map_by_walls_min_explained (%.1f %%): the map is not placed by its walls",
                       refused_by_walls, 100.0 * refused_explained,
                       100.0 * p.map_by_walls_min_explained);
+        r.messages.push_back(note);
+    }
+    else if (whole_unpaired)
+    {
+        char note[300];
+        std::snprintf(note, sizeof note,
+                      "the whole map's best placement puts %.1f %% of its walls on the ground "
+                      "truth's (the next %.1f %%), but no vertex of it near a ground-truth vertex: "
+                      "it is not placed by its walls",
+                      100.0 * whole_share, 100.0 * whole_runner_up);
         r.messages.push_back(note);
     }
     if (match.pairs.empty())

@@ -498,14 +498,15 @@ std::vector<Eigen::Vector2d> notExplained(const WallIndex& gt_walls,
  * the ground truth's walls, its points whose neighbourhood it places too (regionOf()); that
  * region, of min_length_m at least, placed clearly on its own (clearPart()), is the part.
  * Pivots: the vertices `map_free` marks near the points (at most `max_map_pivots`), each with
- * every vertex of `gt_pivots`. */
+ * every vertex of `gt_pivots`. `placements`: the best distinct placements of all of `rest`. */
 std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph& map,
                                    const WallIndex& gt_walls,
                                    const mrpt::maps::CSimplePointsMap& reference,
                                    const std::vector<Eigen::Vector2d>& rest,
                                    const std::vector<char>& map_free,
                                    const std::vector<int>& gt_pivots, std::size_t max_map_pivots,
-                                   double res, const WallMapRule& rule)
+                                   double res, const WallMapRule& rule,
+                                   std::vector<Placement>* placements = nullptr)
 {
     const WallPartRule& pr = rule.part;
     const double cell = std::max(map.map.resolution_m, 1e-6);
@@ -517,6 +518,7 @@ std::optional<WallPart> singledOut(const TopologyGraph& gt, const TopologyGraph&
         bestPlacements(gt, map, gt_walls, reference, evenlyThinned(rest, kIcpPoints), scored,
                        evenlyThinned(rest, kFirstScoredPoints), centreOf(rest), pivots, res, pr);
     if (first.empty()) return std::nullopt;
+    if (placements) *placements = first;
     const Transform2D& t = first[0].t;
     const std::vector<Eigen::Vector2d> region =
         regionOf(gt_walls, rest, t, pr.tolerance_m, rule.region_m, rule.region_share);
@@ -729,10 +731,12 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     // floorplan_lab_ipa/broken_3: at a cut a vertex's clearance changes.)
     std::vector<WallPart> parts;
     StoodOn stood;
+    std::vector<Placement> whole;  // the whole map's best distinct placements
     while (int(parts.size()) < rule.max_parts && lengthOf(rest) >= pr.min_length_m)
     {
-        std::optional<WallPart> part = singledOut(gt, map, gt_walls, reference, rest, map_free,
-                                                  gt_pivots, kMapPivots, res, rule);
+        std::optional<WallPart> part =
+            singledOut(gt, map, gt_walls, reference, rest, map_free, gt_pivots, kMapPivots, res,
+                       rule, parts.empty() ? &whole : nullptr);
         // One place, one part: a part found where an earlier one stands is the same walls
         // again (the whole house against its west half: its east rooms on the west's).
         if (!part || stood.share(*part, pr.tolerance_m) > rule.max_overlap) break;
@@ -745,7 +749,24 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     }
     out.parts_sought = int(parts.size());
     out.explained = all ? 1.0 - double(rest.size()) / double(all) : 0.0;
-    if (parts.empty() || out.explained < rule.min_explained) return out;
+    // No region singled out: a robot map against its plan (furniture along the walls, clutter)
+    // has no 3 m neighbourhood on the plan's walls for 0.9 of it, yet one placement of the whole
+    // map may put most of its walls on them, far ahead of every other (doc/quality.md, step 10).
+    if (parts.empty() && rule.whole_min_share > 0.0 && lengthOf(rest) >= pr.min_length_m &&
+        !whole.empty() && whole[0].share >= rule.whole_min_share &&
+        (whole.size() < 2 || whole[1].share <= pr.max_runner_up * whole[0].share))
+    {
+        WallPart part;
+        part.transform = whole[0].t;
+        part.points = rest;
+        parts.push_back(std::move(part));
+        out.whole = true;
+        out.whole_share = whole[0].share;
+        out.whole_runner_up = whole.size() < 2 ? 0.0 : whole[1].share;
+        rest = notExplained(gt_walls, rest, parts.back().transform, rule.explained_tolerance_m);
+        out.explained = all ? 1.0 - double(rest.size()) / double(all) : 0.0;
+    }
+    if (parts.empty() || (!out.whole && out.explained < rule.min_explained)) return out;
 
     // A map vertex is placed by each part that explains at least kOwnWalls of the walls around
     // it (its clearance + 2 cells: its Voronoi sites; a vertex at a break has both parts'),
@@ -797,6 +818,9 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
         parts[size_t(c.part)].pairs.emplace_back(c.g, c.m);
     }
     for (WallPart& p : parts) std::sort(p.pairs.begin(), p.pairs.end());
+    // The whole map placed but no vertex of it near a ground-truth vertex (the house plan's
+    // rooms against a robot map's): nothing to measure it by.
+    if (out.whole && parts[0].pairs.empty()) return out;
     out.parts = std::move(parts);
     return out;
 }

@@ -51,14 +51,18 @@ struct WallMapRule
     int max_parts = 4;                   //!< parts sought at most
     double slack_share = 0.1;            //!< a pair's reach: + this share of its clearance
     double max_overlap = 0.5;            //!< a part's points where another part stands, at most
+    double whole_min_share = 0.5;        //!< no region: the whole map's best placement, this share
 };
 
 /** A map placed part by part by its walls. */
 struct WallMap
 {
-    std::vector<WallPart> parts;  //!< largest first; empty when refused
-    double explained = 0.0;       //!< share of the map's wall points the parts sought explain
-    int parts_sought = 0;         //!< parts found before the search stopped (refused or not)
+    std::vector<WallPart> parts;   //!< largest first; empty when refused (a whole map: no pair)
+    double explained = 0.0;        //!< share of the map's wall points the parts sought explain
+    int parts_sought = 0;          //!< parts found before the search stopped (refused or not)
+    bool whole = false;            //!< no region singled out: the whole map placed as one part
+    double whole_share = 0.0;      //!< ... its points on a ground-truth wall
+    double whole_runner_up = 0.0;  //!< ... the next distinct placement's
 };
 
 /** A map the match grouped nothing of, placed part by part on the ground truth's walls:
@@ -67,12 +71,15 @@ struct WallMap
  * on a ground-truth wall for at least `region_share` of them (coincident straight walls of
  * another building leave none); a region of min_length_m whose placement is clear on it (as a
  * missed part's) is the next part, and takes away the points within `explained_tolerance_m`.
- * The parts are kept when together they explain at least `min_explained` of the map's walls;
- * each map vertex then pairs, under a part that explains at least a quarter of the walls
- * around it, with the ground-truth vertex it is put nearest within pair_distance_m +
- * slack_share of the larger clearance (a vertex slides in its room); a pair of
- * the match (`given`: ground truth, map) is kept first when such a part puts it within the
- * ground-truth vertex's clearance. Each vertex once. Deterministic. */
+ * The parts are kept when together they explain at least `min_explained` of the map's walls.
+ * When no region is singled out, the whole map is one part if its best placement puts at least
+ * `whole_min_share` of its points on a wall and the next distinct one at most
+ * `part.max_runner_up` of that (a robot map against a plan: clutter leaves no clean region).
+ * Of the parts kept, each map vertex then pairs, under a part that explains at least a quarter
+ * of the walls around it, with the ground-truth vertex it is put nearest within pair_distance_m
+ * + slack_share of the larger clearance (a vertex slides in its room); a pair of the match
+ * (`given`: ground truth, map) is kept first when such a part puts it within the ground-truth
+ * vertex's clearance. Each vertex once. Deterministic. */
 WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
                         const WallIndex& gt_walls, const WallIndex& map_walls,
                         const std::vector<std::pair<int, int>>& given, const WallMapRule& rule);

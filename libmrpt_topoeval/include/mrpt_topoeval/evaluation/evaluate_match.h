@@ -231,6 +231,14 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     double map_by_walls_min_explained = 0.9;
     /** ... parts sought at most (a map broken three times has four) [1]. */
     int map_by_walls_max_parts = 4;
+    /** ... when no part's region is singled out, the whole map is one part if its best
+     * placement puts at least this share of its wall points on the ground truth's walls (within
+     * wall_part_tolerance_m) and the next distinct placement at most wall_part_max_runner_up of
+     * that: a robot map against its floor plan (furniture, clutter, walls seen from one side)
+     * has no clean 3 m neighbourhood, yet one placement puts most of it on the plan. Half: the
+     * placement explains the map's majority (as min_trusted_coverage); the best placement of
+     * another building put at most 0.41 (doc/quality.md, "The whole map"). 0 = off [ratio]. */
+    double map_by_walls_whole_min_share = 0.5;
     /** Accuracy, consistency and brokenness describe the matched part only: below this
      * coverage, or share of the map's walls explained, the quality is multiplied by
      * sqrt(the smaller / this). 0 = the paper's plain weighted mean [ratio]. */
