@@ -752,8 +752,9 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
     // No region singled out: a robot map against its plan (furniture along the walls, clutter)
     // has no 3 m neighbourhood on the plan's walls for 0.9 of it, yet one placement of the whole
     // map may put most of its walls on them, far ahead of every other (doc/quality.md, step 10).
-    if (parts.empty() && rule.whole_min_share > 0.0 && lengthOf(rest) >= pr.min_length_m &&
-        !whole.empty() && whole[0].share >= rule.whole_min_share &&
+    // (`whole` is filled only when the search ran: the map holds min_length_m of wall.)
+    if (parts.empty() && rule.whole_min_share > 0.0 && !whole.empty() &&
+        whole[0].share >= rule.whole_min_share &&
         (whole.size() < 2 || whole[1].share <= pr.max_runner_up * whole[0].share))
     {
         WallPart part;
