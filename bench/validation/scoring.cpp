@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <opencv2/imgproc.hpp>
+#include <set>
 #include <sstream>
 
 #include "geometry/horn.h"
@@ -336,6 +337,43 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             return group.by_walls ? group.map_vertices[k]
                                   : report.match.mapVertexOf(group.gt_vertices[k]);
         };
+        // A group placed by its walls is its walls: its part is the one most of whose wall
+        // points its fit puts on a ground-truth wall (within the truth check's tolerance), not
+        // the one most of its two or three vertices vote for (vertices at a cut are made by two
+        // parts: fresh seed 50's multi_wing_50002/broken_2, two groups each on one vertex of
+        // two parts, session 49).
+        const double cell = std::max(gt.map.resolution_m, 1e-6);
+        const double reach = std::max(0.10, 1.5 * cell);
+        const int r = static_cast<int>(std::ceil(reach / cell));
+        std::set<std::pair<long, long>> gt_cells;
+        auto cellOf = [&](const Eigen::Vector2d& p) {
+            return std::pair<long, long>{long(std::floor(p.x() / cell)),
+                                         long(std::floor(p.y() / cell))};
+        };
+        if (truth.part_of)
+            for (const auto& w : gt.wall_points_m) gt_cells.insert(cellOf(w.cast<double>()));
+        auto onGtWall = [&](const Eigen::Vector2d& p)
+        {
+            const auto [cx, cy] = cellOf(p);
+            for (long dx = -r; dx <= r; ++dx)
+                for (long dy = -r; dy <= r; ++dy)
+                    if (dx * dx + dy * dy <= long(r) * r && gt_cells.count({cx + dx, cy + dy}))
+                        return true;
+            return false;
+        };
+        auto wallPart = [&](const BrokennessGroup& group)
+        {
+            std::map<int, int> on;
+            for (const auto& w : map.wall_points_m)
+            {
+                const Eigen::Vector2d q = w.cast<double>();
+                if (onGtWall(group.transform.apply(q))) ++on[truth.part_of(q)];
+            }
+            int part = -1, best = 0;
+            for (const auto& [k, n] : on)
+                if (k >= 0 && n > best) part = k, best = n;
+            return part;
+        };
         for (const auto& group : report.brokenness.groups)
         {
             std::map<int, int> votes;
@@ -352,6 +390,7 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
             int part = -1, best = 0;
             for (const auto& [k, n] : votes)
                 if (k >= 0 && n > best) part = k, best = n;
+            if (group.by_walls) part = wallPart(group);
             GroupScore g{group.transform.yaw_deg, {}, part};
             for (const auto& [k, n] : votes) g.vertices_per_part[k] = static_cast<std::size_t>(n);
             g.offset_m = group.offset_m;

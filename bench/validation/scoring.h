@@ -88,7 +88,9 @@ struct GroupScore
 {
     double yaw_deg = 0.0;
     std::map<int, std::size_t> vertices_per_part;
-    int part = -1;  //!< The part most of its vertices lie in (-1: none).
+    /** The part most of its vertices lie in; for a group placed by its walls, the part most of
+     * whose wall points its fit puts on a ground-truth wall (since session 49). -1: none. */
+    int part = -1;
     /** Every group but the largest: how far the report says its part is off
      * (BrokennessGroup::offset_m), and how far the truth says: the same measure with each
      * part's own transform, fitted to where the truth places that part's map vertices (NaN
@@ -147,8 +149,8 @@ struct CaseScore
      * broken. A part with 3 such vertices but fewer than 3 counterparts lost them in the map's
      * graph, not in the map. */
     int parts_with_3_kept = -1;
-    /** Largest |yaw error| of an accepted brokenness group against the part most of its
-     * vertices belong to [deg]; NaN when not a broken case or no group. */
+    /** Largest |yaw error| of an accepted brokenness group against its part (GroupScore::part)
+     * [deg]; NaN when not a broken case or no group. */
     double max_group_rotation_error_deg = 0.0;
     /** Broken maps: every injected part and every brokenness group, for brokenCause(). */
     std::vector<PartScore> parts;
