@@ -234,7 +234,7 @@ struct QualityParameters : public mrpt::config::CLoadableOptions
     /** ... when no part's region is singled out, the whole map is one part if its best
      * placement puts at least this share of its wall points on the ground truth's walls (within
      * wall_part_tolerance_m) and the next distinct placement at most wall_part_max_runner_up of
-     * that: a robot map against its floor plan (furniture, clutter, walls seen from one side)
+     * that: a robot map against its floor plan (furniture along the walls, clutter, doors closed)
      * has no clean 3 m neighbourhood, yet one placement puts most of it on the plan. Half: the
      * placement explains the map's majority (as min_trusted_coverage); the best placement of
      * another building put at most 0.41 (doc/quality.md, "The whole map"). 0 = off [ratio]. */
