@@ -97,8 +97,10 @@ WallMap placeMapByWalls(const TopologyGraph& gt, const TopologyGraph& map,
  * each of which must also pair a vertex. A part that puts more than `rule.max_overlap` of its
  * points on ground-truth walls where a group puts the map's walls it explains (`stood_on`, in the
  * ground truth's frame: explainedWalls()'s `placed_explained`) or an accepted part puts its own
- * is refused: one place of the building is the image of one part of the
- * map. Deterministic. */
+ * is refused: one place of the building is the image of one part of the map. And one part of
+ * the map has one fit: a part whose points another part's fit puts on a wall for at least
+ * `rule.part.min_share` of them, while its own fit puts fewer of that part's, goes with its
+ * pairs (a piece of a rack block singled out under a half turn). Deterministic. */
 std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph& placed,
                                     const WallIndex& gt_walls,
                                     const std::vector<Eigen::Vector2f>& unexplained,
