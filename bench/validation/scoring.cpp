@@ -6,10 +6,11 @@
 #include <limits>
 #include <map>
 #include <opencv2/imgproc.hpp>
-#include <set>
+#include <optional>
 #include <sstream>
 
 #include "geometry/horn.h"
+#include "matching/wall_agreement.h"
 
 namespace mrpt_topoeval::validation
 {
@@ -342,32 +343,16 @@ CaseScore scoreCase(const TopologyGraph& gt, const TopologyGraph& map, const Qua
         // the one most of its two or three vertices vote for (vertices at a cut are made by two
         // parts: fresh seed 50's multi_wing_50002/broken_2, two groups each on one vertex of
         // two parts, session 49).
-        const double cell = std::max(gt.map.resolution_m, 1e-6);
-        const double reach = std::max(0.10, 1.5 * cell);
-        const int r = static_cast<int>(std::ceil(reach / cell));
-        std::set<std::pair<long, long>> gt_cells;
-        auto cellOf = [&](const Eigen::Vector2d& p) {
-            return std::pair<long, long>{long(std::floor(p.x() / cell)),
-                                         long(std::floor(p.y() / cell))};
-        };
-        if (truth.part_of)
-            for (const auto& w : gt.wall_points_m) gt_cells.insert(cellOf(w.cast<double>()));
-        auto onGtWall = [&](const Eigen::Vector2d& p)
-        {
-            const auto [cx, cy] = cellOf(p);
-            for (long dx = -r; dx <= r; ++dx)
-                for (long dy = -r; dy <= r; ++dy)
-                    if (dx * dx + dy * dy <= long(r) * r && gt_cells.count({cx + dx, cy + dy}))
-                        return true;
-            return false;
-        };
+        const double reach = std::max(0.10, 1.5 * std::max(gt.map.resolution_m, 1e-6));
+        std::optional<internal::WallIndex> gt_walls;  // built for the first such group
         auto wallPart = [&](const BrokennessGroup& group)
         {
+            if (!gt_walls) gt_walls.emplace(gt.wall_points_m);
             std::map<int, int> on;
             for (const auto& w : map.wall_points_m)
             {
                 const Eigen::Vector2d q = w.cast<double>();
-                if (onGtWall(group.transform.apply(q))) ++on[truth.part_of(q)];
+                if (gt_walls->near(group.transform.apply(q), reach)) ++on[truth.part_of(q)];
             }
             int part = -1, best = 0;
             for (const auto& [k, n] : on)

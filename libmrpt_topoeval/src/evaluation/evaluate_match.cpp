@@ -837,21 +837,14 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
     // are then the match (doc/quality.md, "A map placed by its walls").
     std::optional<internal::WallMap> by_walls;
     GraphMatch walls_match;
-    int refused_by_walls = 0;  // parts found, too few to explain the map
-    double refused_explained = 0.0;
-    bool whole_unpaired = false;  // placed whole, no vertex pair (its shares below)
-    double whole_share = 0.0, whole_runner_up = 0.0;
+    std::optional<internal::WallMap> refused;  // parts too few to explain it, or whole, no pair
     if (p.map_by_walls && given.pairs.size() < std::size_t(p.brokenness_min_vertices) &&
         &map_for_brokenness == &map)
     {
         by_walls = mapByWalls(ground_truth, map, given, p, walls, walls_match);
         if (by_walls->parts.empty())
         {
-            refused_by_walls = by_walls->parts_sought;
-            refused_explained = by_walls->explained;
-            whole_unpaired = by_walls->whole;
-            whole_share = by_walls->whole_share;
-            whole_runner_up = by_walls->whole_runner_up;
+            refused = std::move(by_walls);
             by_walls.reset();
         }
     }
@@ -879,24 +872,24 @@ QualityReport internal::evaluateMatchAt(const TopologyGraph& ground_truth, const
                              ": brokenness cannot be measured on it");
     if (by_walls)
         r.brokenness = wallMapBrokenness(ground_truth, map, *by_walls);
-    else if (refused_by_walls > 0)
+    else if (refused && refused->parts_sought > 0)
     {
         char note[300];
         std::snprintf(note, sizeof note,
                       "the map's walls placed %d part(s) explaining %.1f %% of them, less than "
                       "map_by_walls_min_explained (%.1f %%): the map is not placed by its walls",
-                      refused_by_walls, 100.0 * refused_explained,
+                      refused->parts_sought, 100.0 * refused->explained,
                       100.0 * p.map_by_walls_min_explained);
         r.messages.push_back(note);
     }
-    else if (whole_unpaired)
+    else if (refused && refused->whole)
     {
         char note[300];
         std::snprintf(note, sizeof note,
                       "the whole map's best placement puts %.1f %% of its walls on the ground "
                       "truth's (the next %.1f %%), but no vertex of it near a ground-truth vertex: "
                       "it is not placed by its walls",
-                      100.0 * whole_share, 100.0 * whole_runner_up);
+                      100.0 * refused->whole_share, 100.0 * refused->whole_runner_up);
         r.messages.push_back(note);
     }
     if (match.pairs.empty())

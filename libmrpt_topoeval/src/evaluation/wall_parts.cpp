@@ -704,19 +704,19 @@ std::vector<WallPart> findWallParts(const TopologyGraph& gt, const TopologyGraph
     // truth's walls as a part's must be (min_share), while its own fit puts fewer of that
     // part's, is that part placed wrongly (a rack block of a held-out warehouse singled out
     // under a half turn, whose correct fit, found next, explains both; session 49).
-    std::vector<std::vector<Eigen::Vector2d>> scored;
-    for (const WallPart& p : parts) scored.push_back(evenlyThinned(p.points, kScoredPoints));
-    std::vector<char> wrong(parts.size(), 0);
-    for (std::size_t a = 0; a < parts.size(); ++a)
-        for (std::size_t b = 0; b < parts.size() && !wrong[a]; ++b)
-        {
-            if (a == b || wrong[b]) continue;
-            const double a_by_b =
-                shareOn(gt_walls, scored[a], parts[b].transform, rule.tolerance_m);
-            const double b_by_a =
-                shareOn(gt_walls, scored[b], parts[a].transform, rule.tolerance_m);
-            if (a_by_b >= rule.min_share && b_by_a < a_by_b) wrong[a] = 1;
-        }
+    const std::size_t n = parts.size();
+    std::vector<std::vector<double>> by(n, std::vector<double>(n));  // [a][b]: a's points, b's fit
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        const std::vector<Eigen::Vector2d> scored = evenlyThinned(parts[a].points, kScoredPoints);
+        for (std::size_t b = 0; b < n; ++b)
+            if (a != b) by[a][b] = shareOn(gt_walls, scored, parts[b].transform, rule.tolerance_m);
+    }
+    std::vector<char> wrong(n, 0);
+    for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = 0; b < n && !wrong[a]; ++b)
+            if (a != b && !wrong[b] && by[a][b] >= rule.min_share && by[b][a] < by[a][b])
+                wrong[a] = 1;
     std::vector<WallPart> kept;
     for (std::size_t k = 0; k < parts.size(); ++k)
         if (!wrong[k]) kept.push_back(std::move(parts[k]));
